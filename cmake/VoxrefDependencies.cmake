@@ -1,0 +1,17 @@
+# Every third-party dependency, found on the system (Debian 12 packages; nothing vendored).
+# cmake/setup-debian.sh installs them.
+
+find_package(glm REQUIRED)                      # libglm-dev
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)  # libosmesa6-dev
+pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)        # libegl-dev (headers; loaded at run time)
+find_package(OpenEXR 3 REQUIRED)                # libopenexr-dev
+# libopenimageio-dev. Through pkg-config: Debian 12's OpenImageIOConfig.cmake fails unless the
+# command-line tools (openimageio-tools, which pulls in Qt) are installed too.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+find_package(embree 3 REQUIRED)                 # libembree-dev (fixtures, issue 5)
+find_package(CLI11 REQUIRED)                    # libcli11-dev
+find_package(nlohmann_json 3 REQUIRED)          # nlohmann-json3-dev
+find_package(ZLIB REQUIRED)                     # zlib1g-dev (gzip-compressed raw volumes)
+find_package(Threads REQUIRED)
+find_package(GTest REQUIRED)                    # libgtest-dev

@@ -1,0 +1,91 @@
+#include "reference/common/fields.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace voxref::ref {
+namespace {
+
+struct Blob {
+  double cx, cy, cz, sx, sy, sz, amplitude;
+};
+
+constexpr std::array<Blob, 5> kBlobs{{
+    {0.30, 0.35, 0.40, 0.10, 0.14, 0.12, 1.2},
+    {0.68, 0.30, 0.55, 0.08, 0.08, 0.16, 1.0},
+    {0.50, 0.70, 0.30, 0.16, 0.07, 0.09, 0.9},
+    {0.25, 0.72, 0.72, 0.06, 0.10, 0.06, 1.4},
+    {0.75, 0.72, 0.80, 0.12, 0.12, 0.05, 0.8},
+}};
+
+double gaussianBlobs(double x, double y, double z) {
+  double sum = 0.0;
+  for (const Blob& b : kBlobs) {
+    const double dx = (x - b.cx) / b.sx, dy = (y - b.cy) / b.sy, dz = (z - b.cz) / b.sz;
+    sum += b.amplitude * std::exp(-0.5 * (dx * dx + dy * dy + dz * dz));
+  }
+  return 1.0 - std::exp(-sum);  // smooth, in [0, 1)
+}
+
+// |psi_320| of hydrogen: R_32(r) ~ r^2 exp(-r/3), Y_20 ~ 3 cos^2(theta) - 1, on [-20, 20]^3 Bohr
+// radii. |psi| peaks at r = 6 on the z axis, where r^2 e^{-r/3} (3 - 1) = 72 e^-2.
+double hydrogenOrbital(double x, double y, double z) {
+  constexpr double kHalfExtent = 20.0;
+  const double px = (2.0 * x - 1.0) * kHalfExtent, py = (2.0 * y - 1.0) * kHalfExtent, pz = (2.0 * z - 1.0) * kHalfExtent;
+  const double r2 = px * px + py * py + pz * pz;
+  const double r = std::sqrt(r2);
+  const double angular = r2 > 0.0 ? 3.0 * pz * pz / r2 - 1.0 : 0.0;
+  const double peak = 72.0 * std::exp(-2.0);
+  return std::min(1.0, std::fabs(r2 * std::exp(-r / 3.0) * angular) / peak);
+}
+
+double tentProduct(double x, double y, double z) { return 64.0 * (x * (1.0 - x)) * (y * (1.0 - y)) * (z * (1.0 - z)); }
+
+double ridge(double x, double y, double z) {
+  const double d = (x + y + z - 1.5) / 0.02;
+  return std::exp(-d * d);
+}
+
+}  // namespace
+
+std::vector<std::string> analyticFieldNames() {
+  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge"};
+}
+
+Field analyticField(std::string_view name) {
+  if (name == "gaussian_blobs") return {std::string(name), gaussianBlobs};
+  if (name == "hydrogen_orbital") return {std::string(name), hydrogenOrbital};
+  if (name == "tent_product") return {std::string(name), tentProduct};
+  if (name == "constant_one") return {std::string(name), [](double, double, double) { return 1.0; }};
+  if (name == "zero") return {std::string(name), [](double, double, double) { return 0.0; }};
+  if (name == "ridge") return {std::string(name), ridge};
+  std::string known;
+  for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown analytic field '" + std::string(name) + "' (known: " + known + ")");
+}
+
+Field volumeField(std::string name, std::shared_ptr<const Volume<std::uint8_t>> volume, double scale) {
+  const Dims3 d = volume->dims();
+  for (int e : d)
+    if (e < 2) throw std::invalid_argument("volume field '" + name + "' needs at least 2 samples per axis");
+  auto eval = [volume, scale, d](double x, double y, double z) {
+    const std::array<double, 3> p{x, y, z};
+    std::array<int, 3> i0{};
+    std::array<double, 3> w{};
+    for (int a = 0; a < 3; ++a) {
+      const double t = std::clamp(p[a], 0.0, 1.0) * (d[a] - 1);
+      i0[a] = std::min(static_cast<int>(std::floor(t)), d[a] - 2);
+      w[a] = t - i0[a];
+    }
+    auto v = [&](int dx, int dy, int dz) { return static_cast<double>(volume->at(i0[0] + dx, i0[1] + dy, i0[2] + dz)); };
+    auto lerp = [](double a, double b, double t) { return (1.0 - t) * a + t * b; };
+    const double c00 = lerp(v(0, 0, 0), v(1, 0, 0), w[0]), c10 = lerp(v(0, 1, 0), v(1, 1, 0), w[0]);
+    const double c01 = lerp(v(0, 0, 1), v(1, 0, 1), w[0]), c11 = lerp(v(0, 1, 1), v(1, 1, 1), w[0]);
+    return scale * lerp(lerp(c00, c10, w[1]), lerp(c01, c11, w[1]), w[2]);
+  };
+  return {std::move(name), eval};
+}
+
+}  // namespace voxref::ref

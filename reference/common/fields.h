@@ -1,0 +1,43 @@
+// Scalar fields on the unit cube: the data voxref's built-in scenes sample.
+//
+// A field maps [0,1]^3 to real values (double). Analytic fields are synthetic and need no
+// files; `volumeField` turns a sampled volume into the trilinear interpolant through its samples
+// (sample (i,j,k) sits at (i/(X-1), j/(Y-1), k/(Z-1))), which is how a CT or simulation volume
+// is "resampled to 2^n+1 points per axis" for a sparse grid.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/common/volume.h"
+
+namespace voxref::ref {
+
+struct Field {
+  std::string name;
+  std::function<double(double, double, double)> eval;
+  double operator()(double x, double y, double z) const { return eval(x, y, z); }
+};
+
+// Built-in analytic fields, all with values in [0, 1]:
+//   gaussian_blobs    five anisotropic Gaussian blobs (smooth, non-zero on the boundary)
+//   hydrogen_orbital  |psi_320|^2 of the hydrogen atom (a 3d_z2 orbital), normalised to max 1;
+//                     the paper's data set IV is a hydrogen orbital too
+//   tent_product      64 x(1-x) y(1-y) z(1-z): vanishes on the boundary; its hierarchical
+//                     surpluses are 64 * 4^-(l1+l2+l3) exactly (closed form, used by tests)
+//   constant_one      1 everywhere (data at the upper extreme)
+//   zero              0 everywhere (data at the lower extreme)
+//   ridge             a sharp ridge along a plane: large negative surpluses next to it
+// Throws std::invalid_argument naming the known fields for an unknown name.
+Field analyticField(std::string_view name);
+std::vector<std::string> analyticFieldNames();
+
+// The trilinear interpolant of `volume` (values scaled by `scale`, e.g. 1/255 for uint8).
+// The volume must have at least 2 samples per axis. The field shares ownership of the data.
+Field volumeField(std::string name, std::shared_ptr<const Volume<std::uint8_t>> volume, double scale);
+
+}  // namespace voxref::ref
