@@ -20,3 +20,23 @@ function(voxref_library target)
   target_include_directories(${target} PUBLIC "${PROJECT_SOURCE_DIR}")
   voxref_warnings(${target})
 endfunction()
+
+# Embeds text files (shaders) into a generated header `<binary dir>/<HEADER>` and adds it to
+# TARGET's include path: voxref_embed_text(voxref_gpu HEADER gpu/shader_sources.h
+# NAMESPACE voxref::gpu::shaders FILES shaders/a.frag ...).
+function(voxref_embed_text target)
+  cmake_parse_arguments(ARG "" "HEADER;NAMESPACE" "FILES" ${ARGN})
+  set(inputs "")
+  foreach(f IN LISTS ARG_FILES)
+    list(APPEND inputs "${CMAKE_CURRENT_SOURCE_DIR}/${f}")
+  endforeach()
+  set(output "${PROJECT_BINARY_DIR}/generated/${ARG_HEADER}")
+  string(JOIN "|" joined ${inputs})  # ';' would split the command argument
+  add_custom_command(OUTPUT "${output}"
+    COMMAND ${CMAKE_COMMAND} "-DINPUTS=${joined}" "-DOUTPUT=${output}" "-DNAMESPACE=${ARG_NAMESPACE}"
+            -P "${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake"
+    DEPENDS ${inputs} "${PROJECT_SOURCE_DIR}/cmake/EmbedText.cmake"
+    COMMENT "Embedding ${ARG_HEADER}" VERBATIM)
+  target_sources(${target} PRIVATE "${output}")
+  target_include_directories(${target} PRIVATE "${PROJECT_BINARY_DIR}/generated")
+endfunction()

@@ -1,0 +1,55 @@
+// One framebuffer pixel under blending with factors ONE / ONE, as a GL implementation stores and
+// blends it, under a precision profile. Bit-exact against Mesa 22.3.6 (PRECISION.md):
+//
+// QuantizePerPass (llvmpipe; the GL semantics of a fixed-point colour buffer):
+//   unorm b bits   src code = clamp(RNE(fl(x (2^b - 1)))), then saturating integer
+//                  dst + src (FUNC_ADD) or max(dst - src, 0) (FUNC_REVERSE_SUBTRACT)
+//   RGBA16F        fl(src + half(dst)) / fl(half(dst) - src), stored as binary16 toward zero
+//   RGBA32F        fl(src + dst) / fl(dst - src), no clamp (FTZ/DAZ when the profile flushes)
+// FloatTileCache (softpipe, sp_quad_blend.c + sp_tile_cache.c):
+//   float32 tile value; for unorm targets src and the result are clamped to [0, 1] every pass;
+//   the stored format is written once, when the tile is flushed (read-back): unorm8 RNE,
+//   unorm16 round half up, RGBA16F toward zero. With flush-each-pass the tile is stored and
+//   reloaded (k * fl(1/(2^b - 1))) after every pass.
+// RGBA12 exists only here: a 12-bit fixed-point buffer with the QuantizePerPass semantics, the
+// precision of the 1999 paper's hardware; no GL implementation runs it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "emulation/effects.h"
+#include "emulation/profile.h"
+#include "reference/common/gl_state.h"
+
+namespace voxref::emu {
+
+struct PixelState {
+  std::uint32_t code = 0;  // stored code (QuantizePerPass)
+  float value = 0.0f;      // tile value (FloatTileCache)
+};
+
+class BlendEmu {
+ public:
+  // Throws std::invalid_argument if the profile cannot model a target of this size (softpipe's
+  // tile cache evicts, and so quantizes, tiles of targets over 320 x 640).
+  BlendEmu(ref::FramebufferFormat format, const PrecisionProfile& profile, bool flushEachPass, int width, int height);
+
+  PixelState cleared() const { return {}; }  // glClearColor(0, 0, 0, 0)
+  void blend(PixelState& pixel, float src, ref::BlendEquation equation) const;
+  std::uint32_t resolve(const PixelState& pixel) const;  // what glReadPixels returns
+  std::vector<Effect> effects() const;
+
+ private:
+  std::uint32_t store(float value) const;   // tile value -> stored code (FloatTileCache)
+  float reload(std::uint32_t code) const;   // stored code -> tile value
+
+  ref::FramebufferFormat format_;
+  const PrecisionProfile* profile_;
+  FramebufferModel model_;
+  bool flushEachPass_;
+  int bits_;  // unorm bits, 0 for float formats
+};
+
+}  // namespace voxref::emu

@@ -1,0 +1,91 @@
+// Precision profiles: what a GL implementation computes, as named data (DESIGN.md).
+//
+// A profile selects, for every stage whose bits can differ between implementations, one of the
+// arithmetic variants the emulator implements (each implemented once, in the stage's file). The
+// values of the Mesa 22.3.6 profiles come from PRECISION.md and from reading the Debian 22.3.6
+// sources (texture sampling: gallivm lp_bld_sample_soa.c / lp_bld_sample_aos.c, softpipe
+// sp_tex_sample.c; framebuffers: lp_state_fs.c, lp_bld_blend.c, sp_quad_blend.c,
+// sp_tile_cache.c); the conformance cases `sparsegrid.*` verify them bit for bit.
+#pragma once
+
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxref::emu {
+
+// Coordinate, wrap and filter formulas of a sampler implementation.
+enum class SamplerFamily {
+  Llvmpipe,  // gallivm SoA (lp_build_sample_wrap_linear / _nearest)
+  Softpipe,  // sp_tex_sample.c (wrap_linear_* / wrap_nearest_*, util_ifloor)
+};
+
+enum class LerpArithmetic {
+  Fused,    // fma(w, v1 - v0, v0): llvm.fmuladd on a CPU with FMA
+  Unfused,  // v0 + w * (v1 - v0), three roundings
+};
+
+enum class FramebufferModel {
+  QuantizePerPass,  // every blend reads and writes the stored format (llvmpipe, real hardware)
+  FloatTileCache,   // float32 tiles; stored format written only on flush or eviction (softpipe)
+};
+
+enum class UnormRounding { HalfEven, HalfUp };
+
+// softpipe's texture tile cache (sp_tex_tile_cache.[ch]): direct mapped, `slots` entries of
+// tileSize x tileSize texels, slot = (tile x + yMultiplier * tile y + z) % slots for level 0.
+// img_filter_3d_linear (sp_tex_sample.c:1873-1918) takes all eight texel *pointers* into the
+// cache before it reads them, so a later tap whose tile shares a slot with an earlier tap's tile
+// overwrites the entry the earlier pointer reads: that tap returns the texel at the same
+// position inside the later tile. voxref found this by the conformance cases; `aliasing` models it.
+struct TextureTileCache {
+  bool aliasing = false;
+  int tileSize = 32;
+  int slots = 16;
+  int yMultiplier = 9;
+};
+
+struct PrecisionProfile {
+  std::string_view name;
+  std::string_view summary;
+  std::string_view renderer;  // GL_RENDERER prefix it describes
+  SamplerFamily sampler = SamplerFamily::Llvmpipe;
+  // llvmpipe's 8-bit fixed-point ("AoS") path for unorm8 formats whose wraps are all REPEAT or
+  // CLAMP_TO_EDGE: 8 subtexel bits, 8-bit lerps rounded as pmulhrsw does.
+  bool aos8BitSampling = false;
+  LerpArithmetic floatLerp = LerpArithmetic::Unfused;
+  bool flushDenormals = false;  // FTZ/DAZ in texture filtering and float32 blending
+  TextureTileCache textureTileCache;  // softpipe only
+  FramebufferModel framebuffer = FramebufferModel::QuantizePerPass;
+  UnormRounding unorm16Store = UnormRounding::HalfEven;  // float -> unorm16 of the colour buffer
+  // The largest colour target the model holds for: softpipe's 50-entry tile cache evicts (and
+  // quantizes) tiles of targets wider than 320 or taller than 640 pixels.
+  int maxModelledTargetWidth = 1 << 30;
+  int maxModelledTargetHeight = 1 << 30;
+  std::string_view environment;  // the driver environment this profile describes
+};
+
+std::span<const PrecisionProfile> knownProfiles();
+// nullptr for an unknown name.
+const PrecisionProfile* findProfile(std::string_view name);
+
+// Where a profile departs from what the GL specification's semantics (and real hardware) give for
+// the same state: each departure names the behaviour and describes the semantics to compare with,
+// as the same profile with that behaviour removed plus a flag for per-pass flushes. A case run
+// under a profile with departures reports, per departure, how many samples they change.
+struct Departure {
+  std::string_view id;           // "softpipe.framebuffer.no_per_pass_requantization"
+  std::string_view description;
+  PrecisionProfile semantics;    // the profile without this behaviour
+  bool flushEachPass = false;    // the semantics are obtained with a flush after every pass
+};
+std::vector<Departure> departuresFromGlSemantics(const PrecisionProfile& profile);
+
+// The profile `auto` picks for a renderer string, the environment and the CPU's FMA support:
+// llvmpipe[-noaos][-nofma] or softpipe. nullptr for an unknown renderer (a driver voxref has no
+// profile for: judged by the envelope oracle alone).
+const PrecisionProfile* autoProfile(std::string_view renderer, std::string_view gallivmPerf,
+                                    std::string_view overrideCpuCaps, bool cpuHasFma);
+
+}  // namespace voxref::emu

@@ -1,0 +1,57 @@
+// GL contexts: OSMesa (llvmpipe or softpipe, here) and EGL (real GPUs, headless).
+//
+// A context is current on the creating thread for its whole life; voxref renders into its own
+// framebuffer objects, never into a window. Creation throws GlUnavailable with the reason (no
+// library, no display, wrong driver, version too low). OSMesa picks its gallium driver once per
+// process from GALLIUM_DRIVER, so one process can hold contexts of one OSMesa driver only.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "gpu/gl_api.h"
+
+namespace voxref::gpu {
+
+enum class Driver { Llvmpipe, Softpipe, Egl };
+std::string_view name(Driver d);
+std::optional<Driver> parseDriver(std::string_view s);
+
+struct ContextInfo {
+  Driver driver = Driver::Llvmpipe;
+  std::string api;  // "OSMesa" or "EGL (<platform>)"
+  std::string renderer, version, vendor, glslVersion;
+  int glMajor = 0, glMinor = 0;
+  int glslNumber = 0;         // e.g. 450, 330
+  int max3DTextureSize = 0;   // GL_MAX_3D_TEXTURE_SIZE
+  int maxRenderbufferSize = 0;
+  bool supportsPrecise() const { return glslNumber >= 400; }  // `precise` needs GLSL 4.00
+};
+
+class Context {
+ public:
+  virtual ~Context() = default;
+  const GlApi& gl() const { return gl_; }
+  const ContextInfo& info() const { return info_; }
+
+ protected:
+  void initialise(const GetProcAddress& getProcAddress, Driver driver, std::string api);
+
+ private:
+  GlApi gl_;
+  ContextInfo info_;
+};
+
+// The drivers' required versions: 4.5 core for llvmpipe, 3.3 core for softpipe (its maximum),
+// the highest of 4.5 / 3.3 core for EGL.
+std::unique_ptr<Context> createContext(Driver driver);
+
+// Environment variables that change what Mesa computes (PRECISION.md), with their values or
+// "(unset)": GALLIUM_DRIVER, GALLIVM_PERF, LP_NATIVE_VECTOR_WIDTH, LP_PERF,
+// GALLIUM_OVERRIDE_CPU_CAPS, EGL_PLATFORM.
+std::vector<std::pair<std::string, std::string>> environmentPins();
+
+}  // namespace voxref::gpu

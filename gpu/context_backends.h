@@ -1,0 +1,13 @@
+// Context factories of the two back ends (createContext in context.h dispatches to them).
+#pragma once
+
+#include <memory>
+
+#include "gpu/context.h"
+
+namespace voxref::gpu {
+
+std::unique_ptr<Context> createOsmesaContext(Driver driver);  // llvmpipe or softpipe
+std::unique_ptr<Context> createEglContext();                    // loads libEGL.so.1 at run time
+
+}  // namespace voxref::gpu
