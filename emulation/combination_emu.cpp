@@ -1,13 +1,11 @@
 #include "emulation/combination_emu.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <mutex>
-#include <thread>
 
 #include "emulation/framebuffer_emu.h"
 #include "emulation/texture_sampler_emu.h"
+#include "reference/common/parallel.h"
 
 namespace voxref::emu {
 
@@ -76,24 +74,7 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
       }
   };
 
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, frame.planes);
-  std::atomic<int> next{0}, done{0};
-  std::mutex progressMutex;
-  auto worker = [&] {
-    for (int k = next++; k < frame.planes; k = next++) {
-      renderPlane(k);
-      const int finished = ++done;
-      if (progress) {
-        std::lock_guard lock(progressMutex);
-        progress(finished);
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  ref::parallelFor(frame.planes, options.threads, renderPlane, progress);
   for (std::uint8_t u : out.unmodelled) out.unmodelledCount += u;
   return out;
 }

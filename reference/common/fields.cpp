@@ -43,6 +43,11 @@ double hydrogenOrbital(double x, double y, double z) {
 
 double tentProduct(double x, double y, double z) { return 64.0 * (x * (1.0 - x)) * (y * (1.0 - y)) * (z * (1.0 - z)); }
 
+double figure9(double x, double y, double z) {
+  const bool a = x == 0.25 && y == 0.5 && z == 0.5, b = x == 0.5 && y == 0.25 && z == 0.5, c = x == 0.5 && y == 0.5 && z == 0.25;
+  return a || b || c ? 0.0 : 0.8;
+}
+
 double ridge(double x, double y, double z) {
   const double d = (x + y + z - 1.5) / 0.02;
   return std::exp(-d * d);
@@ -51,7 +56,7 @@ double ridge(double x, double y, double z) {
 }  // namespace
 
 std::vector<std::string> analyticFieldNames() {
-  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge"};
+  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9"};
 }
 
 Field analyticField(std::string_view name) {
@@ -61,6 +66,7 @@ Field analyticField(std::string_view name) {
   if (name == "constant_one") return {std::string(name), [](double, double, double) { return 1.0; }};
   if (name == "zero") return {std::string(name), [](double, double, double) { return 0.0; }};
   if (name == "ridge") return {std::string(name), ridge};
+  if (name == "figure9") return {std::string(name), figure9};
   std::string known;
   for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown analytic field '" + std::string(name) + "' (known: " + known + ")");

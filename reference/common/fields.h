@@ -32,6 +32,10 @@ struct Field {
 //   constant_one      1 everywhere (data at the upper extreme)
 //   zero              0 everywhere (data at the lower extreme)
 //   ridge             a sharp ridge along a plane: large negative surpluses next to it
+//   figure9           the clamping counterexample of Teitzel et al. Fig. 9 lifted to 3D: 0 at
+//                     (1/4,1/2,1/2), (1/2,1/4,1/2), (1/2,1/2,1/4), 0.8 everywhere else; sampled
+//                     on a level-2 sparse grid, no order of unscaled blend passes evaluates it
+//                     correctly (conformance/sparsegrid/figure9_conf.cpp)
 // Throws std::invalid_argument naming the known fields for an unknown name.
 Field analyticField(std::string_view name);
 std::vector<std::string> analyticFieldNames();

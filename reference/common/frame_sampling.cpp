@@ -1,10 +1,6 @@
 #include "reference/common/frame_sampling.h"
 
-#include <algorithm>
-#include <atomic>
-#include <mutex>
-#include <thread>
-#include <vector>
+#include "reference/common/parallel.h"
 
 namespace voxref::ref {
 
@@ -16,30 +12,14 @@ SampleStack sampleFrame(const PlaneFrame& frame, const std::function<double(glm:
                         const std::function<void(int)>& progress) {
   SampleStack s{frame.width, frame.height, frame.planes,
                 std::vector<double>(static_cast<std::size_t>(frame.width) * frame.height * frame.planes, 0.0)};
-  if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  threads = std::min(threads, frame.planes);
-  std::atomic<int> nextPlane{0};
-  std::atomic<int> done{0};
-  std::mutex progressMutex;
-  auto worker = [&] {
-    for (int k = nextPlane++; k < frame.planes; k = nextPlane++) {
-      double* plane = s.values.data() + static_cast<std::size_t>(k) * frame.width * frame.height;
-      for (int j = 0; j < frame.height; ++j)
-        for (int i = 0; i < frame.width; ++i) {
-          const glm::dvec3 p = frame.sample(i, j, k);
-          plane[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j] = insideUnitCube(p) ? fn(p) : 0.0;
-        }
-      const int finished = ++done;
-      if (progress) {
-        std::lock_guard lock(progressMutex);
-        progress(finished);
+  parallelFor(frame.planes, threads, [&](int k) {
+    double* plane = s.values.data() + static_cast<std::size_t>(k) * frame.width * frame.height;
+    for (int j = 0; j < frame.height; ++j)
+      for (int i = 0; i < frame.width; ++i) {
+        const glm::dvec3 p = frame.sample(i, j, k);
+        plane[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j] = insideUnitCube(p) ? fn(p) : 0.0;
       }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  }, progress);
   return s;
 }
 

@@ -1,0 +1,71 @@
+#include "conformance/bench/bench.h"
+
+#include <ostream>
+#include <sstream>
+
+#include "conformance/bench/sparsegrid_bench.h"
+#include "conformance/catalog.h"
+#include "conformance/driver_info.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/runner.h"
+#include "reference/common/parallel.h"
+
+namespace voxref::conf {
+
+std::string markdown(const BenchTable& t) {
+  std::ostringstream m;
+  m << "### " << t.title << "\n\n|";
+  for (const auto& c : t.columns) m << " " << c << " |";
+  m << "\n|";
+  for (std::size_t i = 0; i < t.columns.size(); ++i) m << (i ? " ---: |" : " --- |");
+  m << "\n";
+  for (const auto& row : t.rows) {
+    m << "|";
+    for (const auto& cell : row) m << " " << cell << " |";
+    m << "\n";
+  }
+  if (!t.notes.empty()) m << "\n" << t.notes << "\n";
+  return m.str() + "\n";
+}
+
+nlohmann::json toJson(const Timing& t) {
+  return {{"median_s", t.median}, {"min_s", t.min}, {"max_s", t.max}, {"runs", t.runs}, {"estimated", t.estimated}};
+}
+
+std::string formatSeconds(const Timing& t) {
+  char buf[64];
+  if (t.median >= 100)
+    std::snprintf(buf, sizeof buf, "%.0f s", t.median);
+  else if (t.median >= 1)
+    std::snprintf(buf, sizeof buf, "%.2f s", t.median);
+  else
+    std::snprintf(buf, sizeof buf, "%.1f ms", t.median * 1e3);
+  return std::string(buf) + (t.estimated ? "*" : "");
+}
+
+int runBenchmarks(const BenchOptions& options, std::ostream& out) {
+  const std::vector<std::string> ids = sparseGridBenchIds();
+  bool any = false;
+  for (const auto& id : ids) any |= globMatch(options.filter, id);
+  if (!any) throw UsageError("no benchmark matches '" + options.filter + "' (known: sparsegrid.table1_time, sparsegrid.table2_memory, sparsegrid.accuracy)");
+  io::ensureDirectory(options.out);
+  std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
+  std::string how;
+  const emu::PrecisionProfile* profile = chooseProfile("auto", gl->info(), how);
+
+  const std::vector<BenchTable> tables = sparseGridBench(options, *gl, profile);
+  std::string md = "# voxref bench\n\nDriver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
+                   (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
+                   (options.quick ? ". Quick mode (smoke run: small sizes)." : ".") + "\n\n";
+  nlohmann::json json = {{"driver", driverJson(gl->info(), profile, how)}, {"quick", options.quick}, {"tables", nlohmann::json::array()}};
+  for (const BenchTable& t : tables) {
+    md += markdown(t);
+    json["tables"].push_back({{"id", t.id}, {"title", t.title}, {"columns", t.columns}, {"rows", t.rows}, {"notes", t.notes}, {"data", t.data}});
+  }
+  io::writeFileAtomically(options.out / "bench.md", md);
+  io::writeFileAtomically(options.out / "bench.json", json.dump(2) + "\n");
+  out << md << "wrote " << (options.out / "bench.md").string() << " and bench.json\n";
+  return 0;
+}
+
+}  // namespace voxref::conf

@@ -1,0 +1,48 @@
+// `voxref bench`: accuracy-versus-time tables of the systems, measured side by side in one run
+// on this machine, written as markdown and JSON. Timings are reported, never asserted.
+#pragma once
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gpu/context.h"
+
+namespace voxref::conf {
+
+struct BenchOptions {
+  std::string filter = "*";
+  std::filesystem::path out;
+  gpu::Driver driver = gpu::Driver::Llvmpipe;
+  bool quick = false;  // small sizes and levels: a smoke run that every test run can afford
+  int threads = 0;
+};
+
+struct BenchTable {
+  std::string id;     // "sparsegrid.table1_time"
+  std::string title;
+  std::vector<std::string> columns;
+  std::vector<std::vector<std::string>> rows;
+  std::string notes;  // how it was measured, what is estimated
+  nlohmann::json data = nlohmann::json::object();
+};
+
+std::string markdown(const BenchTable& table);
+
+// A measured duration: the median of `runs` runs (one run when a run takes a second or more).
+struct Timing {
+  double median = 0.0, min = 0.0, max = 0.0;
+  int runs = 0;
+  bool estimated = false;  // extrapolated from part of the work
+};
+nlohmann::json toJson(const Timing& t);
+std::string formatSeconds(const Timing& t);
+
+// Runs the benchmarks whose id matches the filter, writes out/bench.md and out/bench.json, and
+// prints the markdown. Returns the exit status (2 when nothing matches).
+int runBenchmarks(const BenchOptions& options, std::ostream& out);
+
+}  // namespace voxref::conf

@@ -1,0 +1,37 @@
+#include "conformance/case.h"
+
+namespace voxref::conf {
+
+std::string_view name(Status s) {
+  switch (s) {
+    case Status::Pass: return "pass";
+    case Status::Warn: return "warn";
+    case Status::Fail: return "fail";
+    case Status::Skip: return "skip";
+    case Status::Crash: return "crash";
+    case Status::Timeout: return "timeout";
+  }
+  return "?";
+}
+
+std::string_view name(Verdict v) {
+  switch (v) {
+    case Verdict::Pass: return "pass";
+    case Verdict::Warn: return "warn";
+    case Verdict::Fail: return "fail";
+    case Verdict::NotRun: return "not_run";
+    case Verdict::Info: return "info";
+  }
+  return "?";
+}
+
+Status statusFromOracles(const std::vector<OracleResult>& oracles) {
+  Status s = Status::Pass;
+  for (const OracleResult& o : oracles) {
+    if (o.verdict == Verdict::Fail) return Status::Fail;
+    if (o.verdict == Verdict::Warn) s = Status::Warn;
+  }
+  return s;
+}
+
+}  // namespace voxref::conf

@@ -1,0 +1,70 @@
+// A conformance case and what it reports (DESIGN.md, "Three oracles, one report").
+//
+// A case runs one scene through gpu/, emulation/ and reference/ and hands back, per oracle, a
+// verdict with its figures; the runner (runner.h) turns results into results.json, junit.xml
+// and index.html. Case ids are dotted lower_snake, most general first.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace voxref::conf {
+
+class CaseContext;
+
+enum class Status { Pass, Warn, Fail, Skip, Crash, Timeout };
+std::string_view name(Status s);
+
+// Per oracle. NotRun carries its reason in `summary` (for example GL could not run the case).
+enum class Verdict { Pass, Warn, Fail, NotRun, Info };
+std::string_view name(Verdict v);
+
+struct OracleResult {
+  std::string oracle;  // "exact", "envelope", "ideal"
+  Verdict verdict = Verdict::NotRun;
+  std::string summary;
+  nlohmann::json figures = nlohmann::json::object();
+};
+
+// Where a driver departs from the GL semantics, found by comparing it with a model of those
+// semantics (emulation/profile.h, Departure). Findings inform; they never change a verdict.
+struct Finding {
+  std::string id;
+  std::string description;
+  nlohmann::json figures = nlohmann::json::object();
+};
+
+struct CaseImages {  // paths relative to the report directory; empty when not written
+  std::string rendered, emulated, reference, errorMask;
+};
+
+struct CaseResult {
+  std::string id, system, description;
+  Status status = Status::Pass;
+  std::string message;  // reason of a skip, crash or failure
+  std::vector<OracleResult> oracles;
+  std::vector<std::string> effects;  // emulation/effects.h ids the emulator simulated
+  std::vector<Finding> findings;
+  nlohmann::json figures = nlohmann::json::object();  // the case's own numbers (grids, passes ...)
+  double secondsGl = 0.0, secondsEmulation = 0.0, secondsReference = 0.0;
+  CaseImages images;
+};
+
+// Fail if any oracle failed, else warn if any warned, else pass; NotRun and Info do not count.
+Status statusFromOracles(const std::vector<OracleResult>& oracles);
+
+struct Case {
+  std::string id;
+  std::string system;  // "sparsegrid", ...
+  std::string description;
+  std::function<CaseResult(CaseContext&)> run;
+  // The case's scene (JSON), when it renders one: `voxref render --scene <case id>` uses it.
+  std::optional<nlohmann::json> scene;
+};
+
+}  // namespace voxref::conf

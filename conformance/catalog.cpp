@@ -1,0 +1,20 @@
+#include "conformance/catalog.h"
+
+#include <fnmatch.h>
+
+#include "conformance/sparsegrid/sparsegrid_catalog.h"
+
+namespace voxref::conf {
+
+std::vector<Case> allCases() { return sparseGridCases(); }
+
+bool globMatch(const std::string& glob, const std::string& id) { return fnmatch(glob.c_str(), id.c_str(), 0) == 0; }
+
+std::vector<Case> selectCases(const std::vector<Case>& cases, const std::string& glob) {
+  std::vector<Case> out;
+  for (const Case& c : cases)
+    if (globMatch(glob, c.id)) out.push_back(c);
+  return out;
+}
+
+}  // namespace voxref::conf

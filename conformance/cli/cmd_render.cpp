@@ -1,0 +1,85 @@
+#include <fstream>
+#include <iostream>
+
+#include "conformance/catalog.h"
+#include "conformance/cli/commands.h"
+#include "conformance/driver_info.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/io/image_io.h"
+#include "conformance/progress.h"
+#include "conformance/runner.h"
+#include "conformance/sparsegrid/prepared_scene.h"
+#include "emulation/combination_emu.h"
+#include "gpu/combination_gl.h"
+#include "reference/common/framebuffer_codes.h"
+
+namespace voxref::cli {
+namespace {
+
+// A scene JSON file, or the scene of a built-in case.
+nlohmann::json loadScene(const std::string& spec) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(spec, ec)) {
+    std::ifstream in(spec);
+    try {
+      return nlohmann::json::parse(in);
+    } catch (const nlohmann::json::parse_error& e) {
+      throw conf::UsageError("scene file " + spec + " is not valid JSON: " + e.what());
+    }
+  }
+  for (const conf::Case& c : conf::allCases())
+    if (c.id == spec) {
+      if (!c.scene) throw conf::UsageError("case " + spec + " has no single scene to render");
+      return *c.scene;
+    }
+  throw conf::UsageError("'" + spec + "' is neither a scene file nor a case id (voxref list shows the cases)");
+}
+
+}  // namespace
+
+int runRender(const RenderOptions& o) {
+  if (o.out.extension() != ".exr") throw conf::UsageError("--out must name an .exr file, got " + o.out.string());
+  conf::SparseGridScene scene;
+  try {
+    scene = conf::parseSparseGridScene(loadScene(o.scene));
+  } catch (const conf::SceneError& e) {
+    throw conf::UsageError("scene " + o.scene + ": " + e.what());
+  }
+  const conf::PreparedScene prepared = conf::prepareScene(scene);
+  conf::Progress progress("voxref render (" + o.backend + ")", prepared.frame.planes);
+  auto onPlane = [&](int done) { progress.update(done); };
+  ref::SampleStack samples;
+  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()}, {"voxref.backend", o.backend}};
+  if (o.backend == "reference") {
+    samples = conf::referencePlanes(prepared, o.threads, onPlane);
+  } else if (o.backend == "emulation") {
+    const emu::PrecisionProfile* profile = emu::findProfile(o.profile);
+    if (!profile) throw conf::UsageError("unknown profile '" + o.profile + "'");
+    const auto planes = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, *profile,
+                                                {scene.flushEachPass, o.threads}, onPlane);
+    samples = ref::toSampleStack(planes.planes, prepared.textures.readbackScale);
+    attributes["voxref.profile"] = std::string(profile->name);
+  } else if (o.backend == "gl") {
+    const auto driver = gpu::parseDriver(o.driver);
+    if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "'");
+    const auto context = gpu::createContext(*driver);
+    const auto planes = gpu::renderCombinationGl(*context, prepared.textures, prepared.frame, scene.sampler, scene.framebuffer,
+                                                 {scene.flushEachPass}, onPlane);
+    samples = ref::toSampleStack(planes, prepared.textures.readbackScale);
+    attributes["voxref.renderer"] = context->info().renderer + " " + context->info().version;
+  } else {
+    throw conf::UsageError("unknown backend '" + o.backend + "' (reference, emulation or gl)");
+  }
+  progress.finish();
+  const ref::Image image = ref::shadePlanes(samples, prepared.frame, scene.shading);
+  io::ExrChannel y{"Y", std::vector<float>(image.pixels.size())};
+  for (int j = 0; j < image.height; ++j)  // EXR rows run top to bottom
+    for (int i = 0; i < image.width; ++i)
+      y.data[static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * (image.height - 1 - j)] =
+          static_cast<float>(image.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * j]);
+  io::writeExr(o.out, image.width, image.height, {y}, attributes);
+  std::cout << "wrote " << o.out.string() << " (" << image.width << "x" << image.height << ", " << o.backend << ")\n";
+  return 0;
+}
+
+}  // namespace voxref::cli

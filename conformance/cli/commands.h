@@ -1,0 +1,45 @@
+// The subcommands of the voxref command line (DESIGN.md, "Command line"). Each returns the
+// process exit status: 0 success, 1 a conformance failure, 2 bad usage or bad input.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace voxref::cli {
+
+struct ListOptions {
+  std::string filter = "*";
+};
+int runList(const ListOptions& o);
+
+struct ConformOptions {
+  std::string filter = "*";
+  std::string driver = "llvmpipe";
+  std::string profile = "auto";
+  std::filesystem::path out = "voxref-report";
+  int threads = 0;
+  bool allImages = false;
+  std::string command;
+};
+int runConform(const ConformOptions& o);
+
+struct RenderOptions {
+  std::string scene;  // a scene JSON file or a case id
+  std::string backend = "reference";
+  std::string driver = "llvmpipe";
+  std::string profile = "llvmpipe";  // for the emulation backend ("auto": from --driver's context)
+  std::filesystem::path out;
+  int threads = 0;
+};
+int runRender(const RenderOptions& o);
+
+struct BenchOptions {
+  std::string filter = "*";
+  std::filesystem::path out;
+  std::string driver = "llvmpipe";
+  bool quick = false;
+  int threads = 0;
+};
+int runBench(const BenchOptions& o);
+
+}  // namespace voxref::cli

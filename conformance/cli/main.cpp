@@ -1,0 +1,72 @@
+// voxref: the command line. Subcommands: list, conform, render, bench (DESIGN.md).
+#include <CLI/CLI.hpp>
+
+#include <iostream>
+
+#include "conformance/cli/commands.h"
+
+namespace {
+
+std::string joinArgs(int argc, char** argv) {
+  std::string s;
+  for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace voxref::cli;
+  CLI::App app{"voxref: validation suite for compressed volume rendering on GPUs"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "voxref 0.1.0");
+
+  ListOptions list;
+  auto* listCmd = app.add_subcommand("list", "every case id with one line on what it checks");
+  listCmd->add_option("--filter", list.filter, "shell-style glob on case ids")->default_val("*");
+
+  ConformOptions conform;
+  auto* conformCmd = app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
+  conformCmd->add_option("--filter", conform.filter, "shell-style glob on case ids")->default_val("*");
+  conformCmd->add_option("--driver", conform.driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
+  conformCmd->add_option("--profile", conform.profile, "auto or a precision profile name")->default_val("auto");
+  conformCmd->add_option("--out", conform.out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-report");
+  conformCmd->add_option("--threads", conform.threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
+  conformCmd->add_flag("--all-images", conform.allImages, "write images for every case, not only failing and warned ones");
+
+  RenderOptions render;
+  auto* renderCmd = app.add_subcommand("render", "render one scene with one backend into an EXR image");
+  renderCmd->add_option("--scene", render.scene, "scene JSON file, or a case id from voxref list")->required();
+  renderCmd->add_option("--backend", render.backend, "reference, emulation or gl")->default_val("reference");
+  renderCmd->add_option("--driver", render.driver, "GL driver for the gl backend")->default_val("llvmpipe");
+  renderCmd->add_option("--profile", render.profile, "precision profile for the emulation backend")->default_val("llvmpipe");
+  renderCmd->add_option("--out", render.out, "output image (.exr)")->required();
+  renderCmd->add_option("--threads", render.threads, "CPU threads (0: all)")->default_val(0);
+
+  BenchOptions bench;
+  auto* benchCmd = app.add_subcommand("bench", "accuracy-versus-time tables of the systems (markdown and JSON)");
+  benchCmd->add_option("--filter", bench.filter, "shell-style glob on benchmark ids")->default_val("*");
+  benchCmd->add_option("--out", bench.out, "output directory")->required();
+  benchCmd->add_option("--driver", bench.driver, "GL driver")->default_val("llvmpipe");
+  benchCmd->add_option("--threads", bench.threads, "CPU threads for CPU paths (0: all)")->default_val(0);
+  benchCmd->add_flag("--quick", bench.quick, "small sizes and few levels, for a smoke run");
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    if (*listCmd) return runList(list);
+    if (*conformCmd) {
+      conform.command = joinArgs(argc, argv);
+      return runConform(conform);
+    }
+    if (*renderCmd) return runRender(render);
+    if (*benchCmd) return runBench(bench);
+  } catch (const std::exception& e) {
+    std::cerr << "voxref: " << e.what() << "\n";
+    return 2;
+  }
+  return 2;
+}

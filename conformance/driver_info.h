@@ -1,0 +1,26 @@
+// The identity of the driver under test, as every report records it (PRECISION.md: renderer
+// and version strings, environment pins, CPU flags) and the profile chosen for it.
+#pragma once
+
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "emulation/profile.h"
+#include "gpu/context.h"
+
+namespace voxref::conf {
+
+struct CpuFlags {
+  bool ssse3 = false, sse4_1 = false, avx2 = false, fma = false, f16c = false;
+};
+CpuFlags detectCpuFlags();
+
+// The profile for `choice` ("auto" or a profile name) on this context. For "auto", nullptr
+// means an unknown driver (judged by the envelope alone); `how` says what was decided and why.
+// Throws std::invalid_argument for an unknown profile name (the message lists the known ones).
+const emu::PrecisionProfile* chooseProfile(const std::string& choice, const gpu::ContextInfo& info, std::string& how);
+
+nlohmann::json driverJson(const gpu::ContextInfo& info, const emu::PrecisionProfile* profile, const std::string& how);
+
+}  // namespace voxref::conf

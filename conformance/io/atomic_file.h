@@ -1,0 +1,41 @@
+// Writing files so that nothing is ever half-written: the content goes to a temporary file in
+// the same directory, which is renamed over the destination only when complete.
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+namespace voxref::io {
+
+// Any failure to read or write a file; the message names the file and the reason.
+class IoError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A temporary path beside `destination` ("<name>.tmp<pid>.<ext>", keeping the extension so that
+// format libraries recognise it). commit() renames it onto the destination; the destructor
+// removes it if commit() was not reached.
+class AtomicOutput {
+ public:
+  explicit AtomicOutput(std::filesystem::path destination);
+  AtomicOutput(const AtomicOutput&) = delete;
+  AtomicOutput& operator=(const AtomicOutput&) = delete;
+  ~AtomicOutput();
+  const std::filesystem::path& temporary() const { return temporary_; }
+  void commit();  // throws IoError
+
+ private:
+  std::filesystem::path destination_, temporary_;
+  bool committed_ = false;
+};
+
+// Throws IoError naming the path (directory missing, disk full, permission).
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
+
+// Creates the directory (and parents); throws IoError naming it.
+void ensureDirectory(const std::filesystem::path& dir);
+
+}  // namespace voxref::io

@@ -1,0 +1,51 @@
+#include "conformance/io/image_io.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+#include <OpenImageIO/imageio.h>
+
+#include "conformance/io/atomic_file.h"
+
+namespace voxref::io {
+
+void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
+  if (image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
+    throw IoError("image for " + path.string() + " has the wrong number of pixels");
+  AtomicOutput out(path);
+  auto file = OIIO::ImageOutput::create(out.temporary().string());
+  if (!file) throw IoError("cannot write " + path.string() + ": " + OIIO::geterror());
+  const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+  if (!file->open(out.temporary().string(), spec) || !file->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) ||
+      !file->close())
+    throw IoError("cannot write " + path.string() + ": " + file->geterror());
+  out.commit();
+}
+
+void writeExr(const std::filesystem::path& path, int width, int height, const std::vector<ExrChannel>& channels,
+              const std::map<std::string, std::string>& attributes) {
+  for (const ExrChannel& c : channels)
+    if (c.data.size() != static_cast<std::size_t>(width) * height)
+      throw IoError("channel " + c.name + " for " + path.string() + " has the wrong number of pixels");
+  AtomicOutput out(path);
+  try {
+    Imf::Header header(width, height);
+    for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
+    Imf::FrameBuffer fb;
+    for (const ExrChannel& c : channels) {
+      header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
+      fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data.data())), sizeof(float),
+                                   sizeof(float) * static_cast<std::size_t>(width)));
+    }
+    Imf::OutputFile file(out.temporary().c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(height);
+  } catch (const std::exception& e) {
+    throw IoError("cannot write " + path.string() + ": " + e.what());
+  }
+  out.commit();
+}
+
+}  // namespace voxref::io

@@ -1,0 +1,70 @@
+// Strict reading of JSON objects: every key must be known, every value of the expected type and
+// range; errors name the full path of the field ("texture.format") and what was expected.
+#pragma once
+
+#include <set>
+#include <stdexcept>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace voxref::conf {
+
+class JsonFieldError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+class JsonObjectReader {
+ public:
+  // Throws JsonFieldError if `j` is not an object.
+  JsonObjectReader(const nlohmann::json& j, std::string path);
+
+  bool has(const char* key) const { return j_->contains(key); }
+  // The value at `key`, converted to T (bool, int, double, std::string, std::vector<...>).
+  template <class T>
+  T get(const char* key) {
+    const nlohmann::json& v = at(key);
+    try {
+      if constexpr (std::is_same_v<T, int>) {
+        if (!v.is_number_integer()) throw JsonFieldError("");
+      } else if constexpr (std::is_same_v<T, double>) {
+        if (!v.is_number()) throw JsonFieldError("");
+      } else if constexpr (std::is_same_v<T, bool>) {
+        if (!v.is_boolean()) throw JsonFieldError("");
+      } else if constexpr (std::is_same_v<T, std::string>) {
+        if (!v.is_string()) throw JsonFieldError("");
+      }
+      return v.get<T>();
+    } catch (const std::exception&) {
+      throw JsonFieldError(fieldPath(key) + ": expected " + typeName<T>() + ", got " + v.dump());
+    }
+  }
+  template <class T>
+  T get(const char* key, T fallback) {
+    return has(key) ? get<T>(key) : fallback;
+  }
+  int getInt(const char* key, int fallback, int lo, int hi);  // with a range check
+  // A nested object reader; the key counts as known.
+  JsonObjectReader object(const char* key);
+  // Throws JsonFieldError naming the first key that was never read.
+  void finish() const;
+  std::string fieldPath(const char* key) const { return path_.empty() ? key : path_ + "." + key; }
+
+ private:
+  const nlohmann::json& at(const char* key);
+  template <class T>
+  static std::string typeName() {
+    if constexpr (std::is_same_v<T, int>) return "an integer";
+    if constexpr (std::is_same_v<T, double>) return "a number";
+    if constexpr (std::is_same_v<T, bool>) return "true or false";
+    if constexpr (std::is_same_v<T, std::string>) return "a string";
+    return "a value of another type";
+  }
+
+  const nlohmann::json* j_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+}  // namespace voxref::conf

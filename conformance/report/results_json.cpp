@@ -1,0 +1,51 @@
+#include "conformance/report/results_json.h"
+
+#include <map>
+
+namespace voxref::conf {
+
+nlohmann::json caseJson(const CaseResult& r) {
+  nlohmann::json oracles = nlohmann::json::object();
+  for (const OracleResult& o : r.oracles)
+    oracles[o.oracle] = {{"verdict", name(o.verdict)}, {"summary", o.summary}, {"figures", o.figures}};
+  nlohmann::json findings = nlohmann::json::array();
+  for (const Finding& f : r.findings) findings.push_back({{"id", f.id}, {"description", f.description}, {"figures", f.figures}});
+  nlohmann::json images = nlohmann::json::object();
+  if (!r.images.rendered.empty()) images["rendered"] = r.images.rendered;
+  if (!r.images.emulated.empty()) images["emulated"] = r.images.emulated;
+  if (!r.images.reference.empty()) images["reference"] = r.images.reference;
+  if (!r.images.errorMask.empty()) images["error_mask"] = r.images.errorMask;
+  return {{"id", r.id},
+          {"system", r.system},
+          {"description", r.description},
+          {"status", name(r.status)},
+          {"message", r.message},
+          {"oracles", oracles},
+          {"effects", r.effects},
+          {"findings", findings},
+          {"figures", r.figures},
+          {"seconds_gl", r.secondsGl},
+          {"seconds_emulation", r.secondsEmulation},
+          {"seconds_reference", r.secondsReference},
+          {"images", images}};
+}
+
+nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& results) {
+  std::map<std::string, int> counts{{"pass", 0}, {"warn", 0}, {"fail", 0}, {"skip", 0}, {"crash", 0}, {"timeout", 0}};
+  nlohmann::json cases = nlohmann::json::array();
+  for (const CaseResult& r : results) {
+    ++counts[std::string(name(r.status))];
+    cases.push_back(caseJson(r));
+  }
+  return {{"format", "voxref-results"},
+          {"format_version", 1},
+          {"command", run.command},
+          {"started", run.started},
+          {"finished", run.finished},
+          {"complete", run.complete},
+          {"driver", run.driver},
+          {"summary", counts},
+          {"cases", cases}};
+}
+
+}  // namespace voxref::conf

@@ -1,0 +1,337 @@
+#include "conformance/sparsegrid/combination_conf.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "conformance/compare.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/report/case_images.h"
+#include "conformance/sparsegrid/prepared_scene.h"
+#include "emulation/combination_envelope.h"
+#include "gpu/combination_gl.h"
+#include "gpu/gl_error.h"
+#include "reference/common/parallel.h"
+
+namespace voxref::conf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+void judgeEnvelope(CombinationPlanes& r, const ref::CombinationTextures& textures, int threads) {
+  const ref::CodePlanes& judged = r.gl ? *r.gl : r.emulated->planes;
+  r.envelopeJudged = r.gl ? "gl" : "emulation";
+  const emu::CombinationEnvelope envelope(textures, r.frame, r.scene.sampler, judged.format);
+  r.envelopeThreshold = envelope.colourThreshold();
+  r.envelope.assign(judged.codes.size(), 0);
+  const int w = r.frame.width, h = r.frame.height;
+  ref::parallelFor(r.frame.planes, threads, [&](int k) {
+    for (int j = 0; j < h; ++j)
+      for (int i = 0; i < w; ++i) {
+        const std::size_t idx = static_cast<std::size_t>(i) + static_cast<std::size_t>(w) * (j + static_cast<std::size_t>(h) * k);
+        const double v = ref::decodeFramebufferCode(judged.format, judged.codes[idx]);
+        if (envelope.at(i, j, k, emu::kEnvelopePass).contains(v)) continue;
+        r.envelope[idx] = envelope.at(i, j, k, emu::kEnvelopeQualityWarning).contains(v) ? 1 : 2;
+      }
+  });
+  for (std::size_t idx = 0; idx < r.envelope.size(); ++idx) {
+    if (r.envelope[idx] == 1) ++r.envelopeWarn;
+    if (r.envelope[idx] != 2) continue;
+    if (r.envelopeFail++ >= 20) continue;
+    const int i = static_cast<int>(idx % w), j = static_cast<int>((idx / w) % h), k = static_cast<int>(idx / (static_cast<std::size_t>(w) * h));
+    const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
+    r.envelopeFailures.push_back({{"sample", {i, j, k}},
+                                  {"value", ref::decodeFramebufferCode(judged.format, judged.codes[idx])},
+                                  {"allowed", {pass.lo, pass.hi}}});
+  }
+}
+
+// Runs the semantics of every departure of the profile and records, per departure, the samples
+// where the driver's output differs from those semantics; envelope failures and warnings are
+// attributed to the departures that change their sample.
+void findDepartures(CombinationPlanes& r, const ref::CombinationTextures& textures, const emu::PrecisionProfile& profile,
+                    int threads) {
+  std::vector<std::uint8_t> explained(r.envelope.size(), 0);
+  for (const emu::Departure& d : emu::departuresFromGlSemantics(profile)) {
+    const emu::EmulatedPlanes semantics = emu::emulateCombination(
+        textures, r.frame, r.scene.sampler, r.scene.framebuffer, d.semantics, {d.flushEachPass || r.scene.flushEachPass, threads});
+    const CodeComparison c = compareCodes(*r.gl, semantics.planes, &semantics.unmodelled);
+    std::size_t fails = 0, warns = 0;
+    for (std::size_t s = 0; s < c.mask.size() && s < r.envelope.size(); ++s) {
+      if (!c.mask[s]) continue;
+      explained[s] = 1;
+      fails += r.envelope[s] == 2;
+      warns += r.envelope[s] == 1;
+    }
+    r.departures.push_back({std::string(d.id), std::string(d.description),
+                            {{"samples_changed", c.mismatched},
+                             {"samples_compared", c.compared},
+                             {"max_abs_diff_lsb", c.maxDistance},
+                             {"envelope_failures_at_changed_samples", fails},
+                             {"envelope_warnings_at_changed_samples", warns}}});
+  }
+  r.unexplainedFail = r.unexplainedWarn = 0;
+  for (std::size_t s = 0; s < r.envelope.size(); ++s) {
+    if (explained[s]) continue;
+    r.unexplainedFail += r.envelope[s] == 2;
+    r.unexplainedWarn += r.envelope[s] == 1;
+  }
+}
+
+}  // namespace
+
+std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, const SparseGridScene& scene) {
+  auto r = std::make_shared<CombinationPlanes>();
+  r->scene = scene;
+  const int threads = ctx.threads();
+  auto t0 = Clock::now();
+  const PreparedScene prepared = prepareScene(scene);
+  r->frame = prepared.frame;
+  r->reference = referencePlanes(prepared, threads);
+  r->secondsReference = secondsSince(t0);
+  const ref::CombinationTextures& textures = prepared.textures;
+  r->gridCount = static_cast<int>(prepared.combination->grids().size());
+  r->positiveCount = prepared.combination->positiveCount();
+  r->passCount = textures.passes.size();
+  r->textureBytes = ref::textureBytes(textures);
+  r->readbackScale = textures.readbackScale;
+
+  const emu::PrecisionProfile* profile = ctx.profile();
+  if (!profile) {
+    r->emulationNotRun = "no precision profile for this driver (judged by the envelope oracle alone)";
+  } else {
+    try {
+      const emu::CombinationEmuOptions options{scene.flushEachPass, threads};
+      for (emu::Effect e : emu::combinationEffects(textures, scene.sampler, scene.framebuffer, *profile, options, r->frame.width,
+                                                   r->frame.height))
+        r->effects.emplace_back(emu::effectId(e));
+      t0 = Clock::now();
+      r->emulated = emu::emulateCombination(textures, r->frame, scene.sampler, scene.framebuffer, *profile, options);
+      r->secondsEmulation = secondsSince(t0);
+    } catch (const std::invalid_argument& e) {
+      r->emulationNotRun = e.what();
+    }
+  }
+
+  if (!ref::existsInGl(scene.framebuffer)) {
+    r->glNotRun = "GL has no " + std::string(ref::name(scene.framebuffer)) + " colour buffer (emulated only)";
+  } else if (!ctx.gl()) {
+    r->glNotRun = "no GL context in this run";
+  } else {
+    try {
+      t0 = Clock::now();
+      r->gl = gpu::renderCombinationGl(*ctx.gl(), textures, r->frame, scene.sampler, scene.framebuffer, {scene.flushEachPass});
+      r->secondsGl = secondsSince(t0);
+    } catch (const gpu::GlUnsupported& e) {
+      r->glNotRun = e.what();
+    }
+  }
+
+  if (r->gl || r->emulated) judgeEnvelope(*r, textures, threads);
+  if (r->gl && profile) findDepartures(*r, textures, *profile, threads);
+  return r;
+}
+
+namespace {
+
+OracleResult exactOracle(const CombinationPlanes& r, const ref::Image* glImage, const ref::Image* emuImage,
+                         std::vector<PixelFlag>& flags) {
+  OracleResult o{"exact", Verdict::NotRun, "", nlohmann::json::object()};
+  if (!r.gl || !r.emulated) {
+    o.summary = !r.gl ? "GL not run: " + r.glNotRun : "emulation not run: " + r.emulationNotRun;
+    return o;
+  }
+  const CodeComparison c = compareCodes(*r.gl, r.emulated->planes, &r.emulated->unmodelled);
+  const ImageComparison img = compareImages(*glImage, *emuImage);
+  const bool unorm = ref::unormBits(r.gl->format) != 0;
+  o.figures = {{"compared_samples", c.compared},
+               {"excluded_samples", c.excluded},
+               {"mismatched_samples", c.mismatched},
+               {"max_abs_diff_lsb", c.maxDistance},
+               {"diff_unit", unorm ? "lsb" : "ulp"},
+               {"mismatched_pixels", img.mismatchedPixels}};
+  const int w = r.frame.width, h = r.frame.height;
+  if (c.mismatched) {
+    const std::size_t idx = c.firstMismatch;
+    o.figures["first_mismatch"] = {{"sample", {idx % w, (idx / w) % h, idx / (static_cast<std::size_t>(w) * h)}},
+                                   {"gl_code", r.gl->codes[idx]},
+                                   {"emulated_code", r.emulated->planes.codes[idx]}};
+    for (std::size_t s = 0; s < c.mask.size(); ++s)
+      if (c.mask[s]) flags[s % (static_cast<std::size_t>(w) * h)] = PixelFlag::ExactMismatch;
+  }
+  if (c.mismatched) {
+    o.verdict = Verdict::Fail;
+    o.summary = std::to_string(c.mismatched) + " of " + std::to_string(c.compared) + " samples differ (max " +
+                std::to_string(c.maxDistance) + (unorm ? " LSB)" : " ULP)");
+  } else if (c.excluded) {
+    o.verdict = Verdict::Warn;
+    o.summary = "0 of " + std::to_string(c.compared) + " samples differ; " + std::to_string(c.excluded) +
+                " not judged (the model cannot know their value: stale tile-cache data)";
+  } else {
+    o.verdict = Verdict::Pass;
+    o.summary = "0 of " + std::to_string(c.compared) + " samples differ, 0 of " + std::to_string(w * h) + " pixels";
+  }
+  return o;
+}
+
+OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& flags) {
+  OracleResult o{"envelope", Verdict::NotRun, "", nlohmann::json::object()};
+  if (r.envelope.empty()) {
+    o.summary = "nothing to judge: " + r.glNotRun + "; " + r.emulationNotRun;
+    return o;
+  }
+  const std::size_t n = r.envelope.size();
+  o.figures = {{"judged", r.envelopeJudged},
+               {"samples", n},
+               {"pass", n - r.envelopeWarn - r.envelopeFail},
+               {"quality_warning", r.envelopeWarn},
+               {"fail", r.envelopeFail},
+               {"colour_threshold", r.envelopeThreshold},
+               {"precision", {{"coord_bits", emu::kEnvelopePass.coordBits},
+                              {"uvw_bits_pass", emu::kEnvelopePass.uvwBits},
+                              {"uvw_bits_warning", emu::kEnvelopeQualityWarning.uvwBits},
+                              {"division_ulps", emu::kEnvelopePass.divisionUlps}}},
+               {"failures", r.envelopeFailures}};
+  if (!r.departures.empty()) {
+    o.figures["unexplained_failures"] = r.unexplainedFail;
+    o.figures["unexplained_warnings"] = r.unexplainedWarn;
+  }
+  const std::size_t plane = static_cast<std::size_t>(r.frame.width) * r.frame.height;
+  for (std::size_t s = 0; s < n; ++s) {
+    PixelFlag& f = flags[s % plane];
+    if (r.envelope[s] == 2 && f != PixelFlag::ExactMismatch) f = PixelFlag::EnvelopeFail;
+    if (r.envelope[s] == 1 && f == PixelFlag::None) f = PixelFlag::EnvelopeWarn;
+  }
+  const std::string who = r.envelopeJudged == "gl" ? "GL" : "emulated";
+  if (r.envelopeFail) {
+    o.verdict = Verdict::Fail;
+    const auto& first = r.envelopeFailures.front();
+    o.summary = std::to_string(r.envelopeFail) + " of " + std::to_string(n) + " " + who + " samples outside the envelope; first " +
+                first["sample"].dump() + " = " + first["value"].dump() + " not in " + first["allowed"].dump();
+    if (!r.departures.empty())
+      o.summary += "; " + std::to_string(r.envelopeFail - r.unexplainedFail) + " at samples a named departure of the driver changes";
+  } else if (r.envelopeWarn) {
+    o.verdict = Verdict::Warn;
+    o.summary = std::to_string(r.envelopeWarn) + " of " + std::to_string(n) + " " + who +
+                " samples only inside the relaxed (quality warning) envelope";
+  } else {
+    o.verdict = Verdict::Pass;
+    o.summary = "all " + std::to_string(n) + " " + who + " samples inside the envelope";
+  }
+  return o;
+}
+
+OracleResult idealOracle(const CombinationPlanes& r, const ref::SampleStack& judged, const ref::Image& image,
+                         const ref::Image& referenceImage, const std::string& who) {
+  OracleResult o{"ideal", Verdict::Info, "", nlohmann::json::object()};
+  const ErrorFigures planes = compareValues(judged.values, r.reference.values, 1.0);
+  const double peak = *std::max_element(referenceImage.pixels.begin(), referenceImage.pixels.end());
+  const ErrorFigures img = compareValues(image.pixels, referenceImage.pixels, peak > 0.0 ? peak : 1.0);
+  std::size_t negative = 0;
+  for (double v : r.reference.values) negative += v < 0.0;
+  o.figures = {{"judged", who},
+               {"planes", {{"max_abs_error", planes.maxAbs}, {"rmse", planes.rmse}, {"psnr_db", planes.psnrDb}}},
+               {"image", {{"max_abs_error", img.maxAbs}, {"rmse", img.rmse}, {"psnr_db", img.psnrDb}}},
+               {"rmse", planes.rmse},
+               {"reference_negative_samples", negative}};
+  const int bits = ref::unormBits(r.scene.framebuffer);
+  if (bits) {
+    const double lsb = r.readbackScale / (std::ldexp(1.0, bits) - 1.0);
+    o.figures["planes"]["max_abs_error_lsb"] = planes.maxAbs / lsb;
+    o.figures["max_abs_diff_lsb"] = planes.maxAbs / lsb;
+  }
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "%s planes vs double reference: max %.3g, RMSE %.3g, PSNR %.1f dB", who.c_str(), planes.maxAbs,
+                planes.rmse, planes.psnrDb);
+  o.summary = buf;
+  return o;
+}
+
+void writeImages(CaseContext& ctx, CaseResult& result, const ref::Image* glImage, const ref::Image* emuImage,
+                 const ref::Image& refImage, const std::vector<PixelFlag>& flags) {
+  const double peak = *std::max_element(refImage.pixels.begin(), refImage.pixels.end());
+  const double scale = peak > 0.0 ? 1.0 / peak : 1.0;
+  io::ensureDirectory(ctx.outDir() / "images");
+  auto write = [&](const ref::Image& img, const std::string& kind, std::string& slot) {
+    slot = caseImageName(result.id, kind);
+    io::writePng(ctx.outDir() / slot, grayPreview(img, scale));
+  };
+  if (glImage) write(*glImage, "rendered", result.images.rendered);
+  if (emuImage) write(*emuImage, "emulated", result.images.emulated);
+  write(refImage, "reference", result.images.reference);
+  result.images.errorMask = caseImageName(result.id, "error_mask");
+  io::writePng(ctx.outDir() / result.images.errorMask, errorMaskPreview(glImage ? *glImage : emuImage ? *emuImage : refImage, scale, flags));
+}
+
+}  // namespace
+
+CaseResult judgeCombination(CaseContext& ctx, const std::string& id, const std::string& description,
+                            const SparseGridScene& scene) {
+  const auto r = ctx.cached<CombinationPlanes>(planeKey(scene), [&] { return computeCombinationPlanes(ctx, scene); });
+  CaseResult result;
+  result.id = id;
+  result.system = "sparsegrid";
+  result.description = description;
+  result.effects = r->effects;
+  result.findings = r->departures;
+  result.secondsGl = r->secondsGl;
+  result.secondsEmulation = r->secondsEmulation;
+  result.secondsReference = r->secondsReference;
+  result.figures = {{"level", scene.grid.level},
+                    {"boundary", scene.grid.boundary},
+                    {"grids", r->gridCount},
+                    {"positive_grids", r->positiveCount},
+                    {"passes", r->passCount},
+                    {"texture_bytes", r->textureBytes},
+                    {"samples", r->reference.values.size()},
+                    {"scene", toJson(scene)}};
+
+  const ref::Image refImage = ref::shadePlanes(r->reference, r->frame, scene.shading);
+  std::optional<ref::Image> glImage, emuImage;
+  std::optional<ref::SampleStack> glStack, emuStack;
+  if (r->gl) {
+    glStack = ref::toSampleStack(*r->gl, r->readbackScale);
+    glImage = ref::shadePlanes(*glStack, r->frame, scene.shading);
+  }
+  if (r->emulated) {
+    emuStack = ref::toSampleStack(r->emulated->planes, r->readbackScale);
+    emuImage = ref::shadePlanes(*emuStack, r->frame, scene.shading);
+  }
+
+  std::vector<PixelFlag> flags(static_cast<std::size_t>(r->frame.width) * r->frame.height, PixelFlag::None);
+  result.oracles.push_back(exactOracle(*r, glImage ? &*glImage : nullptr, emuImage ? &*emuImage : nullptr, flags));
+  result.oracles.push_back(envelopeOracle(*r, flags));
+  if (glStack)
+    result.oracles.push_back(idealOracle(*r, *glStack, *glImage, refImage, "GL"));
+  else if (emuStack)
+    result.oracles.push_back(idealOracle(*r, *emuStack, *emuImage, refImage, "emulated"));
+
+  result.status = statusFromOracles(result.oracles);
+  if (!r->gl && ref::existsInGl(scene.framebuffer)) {
+    // GL could not run what the case is about: a skip with the reason, never a pass.
+    result.status = Status::Skip;
+    result.message = r->glNotRun;
+  } else if (result.status != Status::Pass) {
+    for (const OracleResult& o : result.oracles)
+      if (o.verdict == Verdict::Fail || o.verdict == Verdict::Warn) {
+        result.message = o.oracle + ": " + o.summary;
+        break;
+      }
+  }
+  if (ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn)
+    writeImages(ctx, result, glImage ? &*glImage : nullptr, emuImage ? &*emuImage : nullptr, refImage, flags);
+  return result;
+}
+
+Case combinationCase(std::string id, std::string description, SparseGridScene scene) {
+  Case c;
+  c.id = id;
+  c.system = "sparsegrid";
+  c.description = description;
+  c.run = [id, description, scene](CaseContext& ctx) { return judgeCombination(ctx, id, description, scene); };
+  c.scene = toJson(scene);
+  return c;
+}
+
+}  // namespace voxref::conf
