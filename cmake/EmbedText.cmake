@@ -1,3 +1,4 @@
+cmake_minimum_required(VERSION 3.25)
 # Script mode: writes OUTPUT, a header that holds each of INPUTS (a |-separated list of files) as an
 # inline constexpr std::string_view named k<Stem><Ext> (combination.frag -> kCombinationFrag).
 # Invoked by voxref_embed_text() at build time so that editing a shader rebuilds its users.

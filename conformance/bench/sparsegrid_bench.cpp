@@ -281,8 +281,8 @@ std::vector<std::string> sparseGridBenchIds() {
 
 std::vector<BenchTable> sparseGridBench(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
   std::vector<BenchTable> tables;
-  if (globMatch(o.filter, "sparsegrid.table2_memory")) tables.push_back(memoryTable(o));
   if (globMatch(o.filter, "sparsegrid.table1_time")) tables.push_back(timeTable(o, gl, profile));
+  if (globMatch(o.filter, "sparsegrid.table2_memory")) tables.push_back(memoryTable(o));
   if (globMatch(o.filter, "sparsegrid.accuracy")) tables.push_back(accuracyTable(o, gl, profile));
   return tables;
 }

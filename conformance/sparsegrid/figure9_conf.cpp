@@ -50,7 +50,8 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
   // Passes of the unscaled method: 0..2 add A, B, C; 3 and 4 subtract N (twice).
   std::set<std::vector<int>> seen;  // orders that differ only by swapping the two N passes are one order
   std::vector<int> perm{0, 1, 2, 3, 4};
-  std::size_t orders = 0, exactMismatches = 0, correctOrders = 0;
+  std::size_t orders = 0, exactMismatches = 0, mismatchedPixels = 0, correctOrders = 0;
+  std::uint64_t maxDistance = 0;
   double smallestFailure = INFINITY, bound = 0.0;
   nlohmann::json perOrder = nlohmann::json::array();
   do {
@@ -68,7 +69,15 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
     result.secondsGl += r->secondsGl;
     result.secondsEmulation += r->secondsEmulation;
     result.secondsReference += r->secondsReference;
-    if (r->emulated) exactMismatches += compareCodes(*r->gl, r->emulated->planes).mismatched;
+    if (r->emulated) {
+      const CodeComparison c = compareCodes(*r->gl, r->emulated->planes);
+      exactMismatches += c.mismatched;
+      maxDistance = std::max(maxDistance, c.maxDistance);
+      const std::size_t plane = static_cast<std::size_t>(r->frame.width) * r->frame.height;
+      std::vector<std::uint8_t> pixel(plane, 0);
+      for (std::size_t s = 0; s < c.mask.size(); ++s) pixel[s % plane] |= c.mask[s];
+      for (std::uint8_t m : pixel) mismatchedPixels += m;
+    }
     bound = quantizationBound(r->passCount, r->readbackScale);
     const double err = maxError(*r);
     if (err <= bound) ++correctOrders;
@@ -80,7 +89,7 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
 
   OracleResult exact{"exact", exactMismatches ? Verdict::Fail : Verdict::Pass,
                      std::to_string(exactMismatches) + " samples differ between GL and emulation over all " + std::to_string(orders) + " orders",
-                     {{"mismatched_samples", exactMismatches}, {"orders", orders}}};
+                     {{"mismatched_samples", exactMismatches}, {"mismatched_pixels", mismatchedPixels}, {"max_abs_diff_lsb", maxDistance}, {"orders", orders}}};
   if (!ctx.profile()) exact = {"exact", Verdict::NotRun, "no precision profile for this driver", {}};
   // The derivation predicts an error of at least 0.6 for every order; anything above the
   // quantization bound already shows the clamping failure.

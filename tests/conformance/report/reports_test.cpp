@@ -1,0 +1,56 @@
+#include <gtest/gtest.h>
+
+#include "conformance/report/html_report.h"
+#include "conformance/report/junit_xml.h"
+#include "conformance/report/results_json.h"
+
+namespace voxref::conf {
+namespace {
+
+CaseResult sample(Status s) {
+  CaseResult r;
+  r.id = "sparsegrid.combination.rgba8.l6.xray";
+  r.system = "sparsegrid";
+  r.description = "a <case> & more";
+  r.status = s;
+  r.message = s == Status::Fail ? "exact: 3 of 10 samples differ" : "";
+  r.oracles = {{"exact", Verdict::Pass, "0 of 10 samples differ", {{"mismatched_pixels", 0}, {"max_abs_diff_lsb", 0}}},
+               {"ideal", Verdict::Info, "max 1", {{"rmse", 0.1}}}};
+  r.effects = {"output.unorm8"};
+  return r;
+}
+
+TEST(ResultsJson, HoldsWhatDesignRequires) {
+  RunInfo run{{{"renderer", "llvmpipe"}}, "voxref conform", "t0", "t1", true};
+  const nlohmann::json j = resultsJson(run, {sample(Status::Pass), sample(Status::Fail)});
+  EXPECT_EQ(j["driver"]["renderer"], "llvmpipe");
+  EXPECT_EQ(j["summary"]["pass"], 1);
+  EXPECT_EQ(j["summary"]["fail"], 1);
+  const auto& c = j["cases"][0];
+  for (const char* key : {"id", "status", "oracles", "effects", "seconds_gl", "seconds_emulation", "seconds_reference"})
+    EXPECT_TRUE(c.contains(key)) << key;
+  EXPECT_EQ(c["oracles"]["exact"]["verdict"], "pass");
+  EXPECT_EQ(c["oracles"]["exact"]["figures"]["mismatched_pixels"], 0);
+}
+
+TEST(JunitXml, FailuresSkipsAndEscaping) {
+  CaseResult skip = sample(Status::Skip);
+  skip.message = "texture > limit";
+  const std::string x = junitXml({sample(Status::Pass), sample(Status::Fail), skip});
+  EXPECT_NE(x.find("tests=\"3\" failures=\"1\" errors=\"0\" skipped=\"1\""), std::string::npos) << x;
+  EXPECT_NE(x.find("<failure message=\"exact: 3 of 10 samples differ\"/>"), std::string::npos);
+  EXPECT_NE(x.find("<skipped message=\"texture &gt; limit\"/>"), std::string::npos);
+  EXPECT_EQ(xmlEscape("<a & 'b'>"), "&lt;a &amp; &apos;b&apos;&gt;");
+}
+
+TEST(HtmlReport, ShowsCountsEscapesAndMarksPartialRuns) {
+  RunInfo run{{{"renderer", "llvmpipe"}}, "voxref conform", "t0", "t1", false};
+  const std::string h = htmlReport(run, {sample(Status::Pass), sample(Status::Fail)});
+  EXPECT_NE(h.find("id=\"partial\""), std::string::npos);
+  EXPECT_NE(h.find("data-status=\"fail\">1</th>"), std::string::npos);
+  EXPECT_NE(h.find("a &lt;case&gt; &amp; more"), std::string::npos);
+  EXPECT_EQ(h.find("a <case>"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace voxref::conf
