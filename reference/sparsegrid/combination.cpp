@@ -39,19 +39,44 @@ Combination::Combination(const SparseGrid& grid) : level_(grid.spec().level), bo
   }
 }
 
-ValueGradient trilinear(const Volume<double>& v, const Levels3& levels, glm::dvec3 p) {
-  const double c[3] = {std::clamp(p.x, 0.0, 1.0), std::clamp(p.y, 0.0, 1.0), std::clamp(p.z, 0.0, 1.0)};
+namespace {
+
+struct Cell {
   int i0[3];
-  double w[3], scale[3];
+  double w[3];
+};
+
+Cell cellOf(const Levels3& levels, glm::dvec3 p) {
+  const double c[3] = {std::clamp(p.x, 0.0, 1.0), std::clamp(p.y, 0.0, 1.0), std::clamp(p.z, 0.0, 1.0)};
+  Cell cell;
   for (int a = 0; a < 3; ++a) {
-    const int cells = 1 << levels[a];
     const double t = std::ldexp(c[a], levels[a]);  // exact
-    i0[a] = std::min(static_cast<int>(std::floor(t)), cells - 1);
-    w[a] = t - i0[a];
-    scale[a] = cells;
+    cell.i0[a] = std::min(static_cast<int>(std::floor(t)), (1 << levels[a]) - 1);
+    cell.w[a] = t - cell.i0[a];
   }
+  return cell;
+}
+
+double lerp(double a, double b, double t) { return (1.0 - t) * a + t * b; }
+
+}  // namespace
+
+double trilinearValue(const Volume<double>& v, const Levels3& levels, glm::dvec3 p) {
+  const Cell c = cellOf(levels, p);
+  auto at = [&](int dx, int dy, int dz) { return v.at(c.i0[0] + dx, c.i0[1] + dy, c.i0[2] + dz); };
+  // The same operations, in the same order, as trilinear(): identical values.
+  const double c00 = lerp(at(0, 0, 0), at(1, 0, 0), c.w[0]), c10 = lerp(at(0, 1, 0), at(1, 1, 0), c.w[0]);
+  const double c01 = lerp(at(0, 0, 1), at(1, 0, 1), c.w[0]), c11 = lerp(at(0, 1, 1), at(1, 1, 1), c.w[0]);
+  return lerp(lerp(c00, c10, c.w[1]), lerp(c01, c11, c.w[1]), c.w[2]);
+}
+
+ValueGradient trilinear(const Volume<double>& v, const Levels3& levels, glm::dvec3 p) {
+  const Cell cell = cellOf(levels, p);
+  const int* i0 = cell.i0;
+  const double* w = cell.w;
+  double scale[3];
+  for (int a = 0; a < 3; ++a) scale[a] = 1 << levels[a];
   auto at = [&](int dx, int dy, int dz) { return v.at(i0[0] + dx, i0[1] + dy, i0[2] + dz); };
-  auto lerp = [](double a, double b, double t) { return (1.0 - t) * a + t * b; };
   // Corner values, x first.
   const double c00 = lerp(at(0, 0, 0), at(1, 0, 0), w[0]);
   const double c10 = lerp(at(0, 1, 0), at(1, 1, 0), w[0]);
@@ -70,7 +95,7 @@ ValueGradient trilinear(const Volume<double>& v, const Levels3& levels, glm::dve
 
 double Combination::value(glm::dvec3 x) const {
   double sum = 0.0;
-  for (const ComponentGrid& g : grids_) sum += g.coefficient * trilinear(g.values, g.levels, x).value;
+  for (const ComponentGrid& g : grids_) sum += g.coefficient * trilinearValue(g.values, g.levels, x);
   return sum;
 }
 

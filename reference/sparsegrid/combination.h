@@ -61,5 +61,7 @@ class Combination {
 // Trilinear interpolation of one grid's node values on [0,1]^3 (cell i0 = min(floor(x N), N - 1),
 // N = 2^l per axis), value and gradient, in double.
 ValueGradient trilinear(const Volume<double>& values, const Levels3& levels, glm::dvec3 x);
+// The value alone, bit-identical to trilinear(...).value.
+double trilinearValue(const Volume<double>& values, const Levels3& levels, glm::dvec3 x);
 
 }  // namespace voxref::ref

@@ -82,6 +82,17 @@ TEST(Combination, AgreesWithDirectInterpolationWithinTheRoundingBound) {
   EXPECT_GT(worst, 0.0);  // the test would be vacuous if both were exact here
 }
 
+TEST(Trilinear, ValueAloneIsBitIdenticalToValueWithGradient) {
+  const Combination c(SparseGrid::fromField({5, true}, analyticField("hydrogen_orbital")));
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> coord(0.0, 1.0);
+  for (int t = 0; t < 500; ++t) {
+    const glm::dvec3 p{coord(rng), coord(rng), coord(rng)};
+    for (const ComponentGrid& g : c.grids()) ASSERT_EQ(trilinearValue(g.values, g.levels, p), trilinear(g.values, g.levels, p).value);
+    ASSERT_EQ(c.value(p), c.valueGradient(p).value);
+  }
+}
+
 TEST(Combination, ComponentGridsHoldTheSparseGridsNodalValues) {
   const Field f = analyticField("gaussian_blobs");
   const SparseGrid g = SparseGrid::fromField({5, true}, f);
