@@ -9,10 +9,11 @@
 
 namespace voxref::emu {
 
-float combinationTexCoord(float p, int level, int extent) {
-  const float node = p * std::ldexp(1.0f, level);  // exact: a power-of-two scale
-  const float centred = node + 0.5f;                // exact on the plane-frame lattice
-  return centred / static_cast<float>(extent);      // the one rounding of the address
+float combinationTexCoord(float p, int level, int extent, int origin) {
+  const float node = p * std::ldexp(1.0f, level);                  // exact: a power-of-two scale
+  const float centred = node + 0.5f;                                // exact on the plane-frame lattice
+  const float local = centred - static_cast<float>(origin);        // exact: an integer below 2^13
+  return local / static_cast<float>(extent);                        // the one rounding of the address
 }
 
 std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures, const ref::SamplerState& sampler,
@@ -26,6 +27,7 @@ std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures,
     return std::any_of(t.dims.begin(), t.dims.end(), [](int d) { return (d & (d - 1)) != 0; });
   });
   if (divisionRounds) add(Effect::AddressDivision);
+  if (ref::brickedGridCount(textures) > 0) add(Effect::TextureBricks);
   for (const ref::GridTexture& t : textures.textures)
     for (Effect e : TextureSamplerEmu(t.dims, textures.format, t.codes, sampler, profile).effects()) add(e);
   for (Effect e : BlendEmu(format, profile, options.flushEachPass, width, height).effects()) add(e);
@@ -62,9 +64,13 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
         if (!discarded)
           for (const ref::CombinationPass& pass : textures.passes) {
             const ref::GridTexture& t = textures.textures[pass.texture];
-            const float src = samplers[pass.texture].sampleRed(combinationTexCoord(p.x, t.levels[0], t.dims[0]),
-                                                               combinationTexCoord(p.y, t.levels[1], t.dims[1]),
-                                                               combinationTexCoord(p.z, t.levels[2], t.dims[2]),
+            // The brick's discard test on c = p * 2^l (exact), as the shader does it.
+            if (!ref::servesCell(t, p.x * std::ldexp(1.0f, t.levels[0]), p.y * std::ldexp(1.0f, t.levels[1]),
+                                 p.z * std::ldexp(1.0f, t.levels[2])))
+              continue;
+            const float src = samplers[pass.texture].sampleRed(combinationTexCoord(p.x, t.levels[0], t.dims[0], t.origin[0]),
+                                                               combinationTexCoord(p.y, t.levels[1], t.dims[1], t.origin[1]),
+                                                               combinationTexCoord(p.z, t.levels[2], t.dims[2], t.origin[2]),
                                                                &unmodelled);
             blend.blend(px, src, pass.equation);
           }

@@ -42,7 +42,8 @@ std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures,
                                        ref::FramebufferFormat format, const PrecisionProfile& profile,
                                        const CombinationEmuOptions& options, int width, int height);
 
-// The float32 texture coordinate the shader computes: fl(fl(fl(p * 2^l) + 0.5) / extent).
-float combinationTexCoord(float p, int level, int extent);
+// The float32 texture coordinate the shader computes in a brick starting at texel `origin`:
+// fl(fl(fl(fl(p * 2^l) + 0.5) - origin) / extent).
+float combinationTexCoord(float p, int level, int extent, int origin = 0);
 
 }  // namespace voxref::emu

@@ -70,8 +70,10 @@ Interval CombinationEnvelope::at(int i, int j, int k, const EnvelopePrecision& p
   Interval dst{0.0, 0.0};
   for (const ref::CombinationPass& pass : textures_->passes) {
     const ref::GridTexture& t = textures_->textures[pass.texture];
-    const glm::dvec3 u{ref::textureCoordinate(p.x, t.levels[0], t.dims[0]), ref::textureCoordinate(p.y, t.levels[1], t.dims[1]),
-                       ref::textureCoordinate(p.z, t.levels[2], t.dims[2])};
+    if (!ref::servesCell(t, std::ldexp(p.x, t.levels[0]), std::ldexp(p.y, t.levels[1]), std::ldexp(p.z, t.levels[2]))) continue;
+    const glm::dvec3 u{ref::textureCoordinate(p.x, t.levels[0], t.dims[0], t.origin[0]),
+                       ref::textureCoordinate(p.y, t.levels[1], t.dims[1], t.origin[1]),
+                       ref::textureCoordinate(p.z, t.levels[2], t.dims[2], t.origin[2])};
     Interval src = lookups_[pass.texture].lookup(u, precision);
     src.lo -= threshold_;
     src.hi += threshold_;

@@ -12,8 +12,9 @@ struct EffectText {
   std::string_view description;
 };
 
-constexpr std::array<EffectText, 24> kEffects{{
+constexpr std::array<EffectText, 25> kEffects{{
     {Effect::AddressDivision, "address.float32_division", "texture coordinate (p 2^l + 0.5) / D rounded in float32"},
+    {Effect::TextureBricks, "address.texture_bricks", "grid textures split into overlapping bricks; per-brick address and discard"},
     {Effect::TexelUnorm8, "texel.unorm8", "texel values quantized to unorm8"},
     {Effect::TexelUnorm16, "texel.unorm16", "texel values quantized to unorm16"},
     {Effect::TexelHalf, "texel.half", "texel values rounded to binary16"},

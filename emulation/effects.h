@@ -10,6 +10,7 @@ namespace voxref::emu {
 
 enum class Effect {
   AddressDivision,          // texture coordinate (p 2^l + 0.5) / D rounds (D not a power of two)
+  TextureBricks,            // grids split into bricks: per-brick address and discard
   TexelUnorm8,              // texels stored as unorm8
   TexelUnorm16,             // texels stored as unorm16
   TexelHalf,                // texels stored as binary16

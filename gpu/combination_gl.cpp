@@ -38,6 +38,9 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
   const GLint planeOrigin = program.uniform("planeOrigin");
   const GLint nodeScale = program.uniform("nodeScale");
   const GLint extent = program.uniform("extent");
+  const GLint brickOrigin = program.uniform("brickOrigin");
+  const GLint cellLo = program.uniform("cellLo");
+  const GLint cellHi = program.uniform("cellHi");
   checkGl(gl, "setting up the combination passes");
 
   ref::CodePlanes out{format, frame.width, frame.height, frame.planes, {}};
@@ -52,6 +55,9 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
       gl.BindTexture(GL_TEXTURE_3D, gridTextures[pass.texture].id());
       gl.Uniform3f(nodeScale, std::ldexp(1.0f, t.levels[0]), std::ldexp(1.0f, t.levels[1]), std::ldexp(1.0f, t.levels[2]));
       gl.Uniform3f(extent, float(t.dims[0]), float(t.dims[1]), float(t.dims[2]));
+      gl.Uniform3f(brickOrigin, float(t.origin[0]), float(t.origin[1]), float(t.origin[2]));
+      gl.Uniform3f(cellLo, float(t.cellLo[0]), float(t.cellLo[1]), float(t.cellLo[2]));
+      gl.Uniform3f(cellHi, float(t.cellHi[0]), float(t.cellHi[1]), float(t.cellHi[2]));
       gl.BlendEquation(glBlendEquationOf(pass.equation));
       gl.DrawArrays(GL_TRIANGLES, 0, 3);
       if (options.flushEachPass) gl.Finish();

@@ -95,6 +95,7 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
   r->positiveCount = prepared.combination->positiveCount();
   r->passCount = textures.passes.size();
   r->textureBytes = ref::textureBytes(textures);
+  r->brickedGrids = ref::brickedGridCount(textures);
   r->readbackScale = textures.readbackScale;
 
   const emu::PrecisionProfile* profile = ctx.profile();
@@ -284,6 +285,7 @@ CaseResult judgeCombination(CaseContext& ctx, const std::string& id, const std::
                     {"positive_grids", r->positiveCount},
                     {"passes", r->passCount},
                     {"texture_bytes", r->textureBytes},
+                    {"bricked_grids", r->brickedGrids},
                     {"samples", r->reference.values.size()},
                     {"scene", toJson(scene)}};
 

@@ -31,6 +31,7 @@ struct CombinationPlanes {
   ref::PlaneFrame frame;
   int gridCount = 0, positiveCount = 0;
   std::size_t passCount = 0, textureBytes = 0;
+  int brickedGrids = 0;
   double readbackScale = 1.0;
   ref::SampleStack reference;
   std::optional<ref::CodePlanes> gl;

@@ -66,6 +66,23 @@ void addTextureCases(std::vector<Case>& cases) {
         }
 }
 
+void addBrickCases(std::vector<Case>& cases) {
+  // Bricks at a small size so that they are tested at every level, not only at 11 and 12.
+  for (ref::TextureSizing sizing : {ref::TextureSizing::Padded, ref::TextureSizing::Exact})
+    for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {
+      SparseGridScene s = defaultSparseGridScene();
+      s.grid.level = 6;
+      s.textures.sizing = sizing;
+      s.textures.maxExtent = 16;
+      s.framebuffer = fb;
+      s.shading.mode = RenderMode::Mip;
+      cases.push_back(combinationCase("sparsegrid.texture.bricks16." + str(ref::name(sizing)) + "." + str(ref::name(fb)),
+                                      "grid textures split into 16-texel bricks (" + str(ref::name(sizing)) + ", " +
+                                          str(ref::name(fb)) + "): per-brick addresses and discards, level 6",
+                                      s));
+    }
+}
+
 void addFramebufferCases(std::vector<Case>& cases) {
   for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA16, FramebufferFormat::RGBA16F}) {
     SparseGridScene s = defaultSparseGridScene();
@@ -143,14 +160,17 @@ void addHardCases(std::vector<Case>& cases) {
     s.grid.level = 1;
     cases.push_back(combinationCase("sparsegrid.hard.level1", "level 1: one grid (1,1,1), n+ = 1, no negative pass", s));
   }
-  {
+  for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {
     SparseGridScene s = defaultSparseGridScene();
     s.grid.level = 12;
     s.textures.sizing = ref::TextureSizing::Exact;
+    s.framebuffer = fb;
     s.width = s.height = 24;
     s.planes = 12;
-    cases.push_back(combinationCase("sparsegrid.hard.level12",
-                                    "level 12 (199 grids, 4097-texel textures): built without any full grid", s));
+    cases.push_back(combinationCase("sparsegrid.hard.level12." + str(ref::name(fb)),
+                                    "level 12 (199 grids, n+ = 133, 4097-texel textures in 2048-texel bricks), " +
+                                        str(ref::name(fb)) + ": built without any full grid",
+                                    s));
   }
 }
 
@@ -174,6 +194,7 @@ std::vector<Case> sparseGridCases() {
   std::vector<Case> cases;
   addMainCases(cases);
   addTextureCases(cases);
+  addBrickCases(cases);
   addFramebufferCases(cases);
   addDataCases(cases);
   addHardCases(cases);

@@ -60,6 +60,7 @@ SparseGridScene parseSparseGridScene(const nlohmann::json& j) {
     s.sampler.filter = parseEnum(t, "filter", s.sampler.filter, ref::parseFilter, "nearest, linear");
     s.sampler.wrap = parseEnum(t, "wrap", s.sampler.wrap, ref::parseWrap, "clamp_to_edge, repeat, clamp_to_border");
     s.sampler.borderRed = t.get<double>("border", s.sampler.borderRed);
+    s.textures.maxExtent = t.getInt("max_extent", s.textures.maxExtent, 3, 16384);
     t.finish();
   }
   s.textures.scaling = parseEnum(r, "scaling", s.textures.scaling, ref::parseScalingPolicy, "scaled, unscaled");
@@ -104,7 +105,8 @@ nlohmann::json toJson(const SparseGridScene& s) {
   j["level"] = s.grid.level;
   j["boundary"] = s.grid.boundary;
   j["texture"] = {{"format", ref::name(s.textures.format)}, {"sizing", ref::name(s.textures.sizing)},
-                  {"filter", ref::name(s.sampler.filter)}, {"wrap", ref::name(s.sampler.wrap)}, {"border", s.sampler.borderRed}};
+                  {"filter", ref::name(s.sampler.filter)}, {"wrap", ref::name(s.sampler.wrap)}, {"border", s.sampler.borderRed},
+                  {"max_extent", s.textures.maxExtent}};
   j["scaling"] = ref::name(s.textures.scaling);
   j["framebuffer"] = ref::name(s.framebuffer);
   j["flush_each_pass"] = s.flushEachPass;

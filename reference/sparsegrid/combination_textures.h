@@ -17,10 +17,22 @@
 //     u = (p * 2^l + 0.5) / D,   D = texels on that axis
 // (the paper's s/2 + 1/(4 * 2^l) for D = 2^(l+1)). p * 2^l and + 0.5 are exact in float32 on the
 // plane-frame lattice (plane_frame.h); the division is the one rounding of the address.
+//
+// Bricks. GL 4.5 guarantees GL_MAX_3D_TEXTURE_SIZE >= 2048 (table 23.53), so a grid texture with
+// more than `maxExtent` (default 2048) texels on an axis (level >= 11) is split along that axis
+// into bricks of maxExtent texels that overlap by one texel: brick b serves the cells
+// [b C, (b+1) C) of its axis, C = maxExtent - 1 (the last brick also serves node 2^l), and holds
+// the texels [b C, b C + maxExtent). Every brick is drawn as its own pass with the grid's blend
+// equation; a fragment whose node coordinate c = p 2^l lies outside the brick's cells is
+// discarded, so each sample still blends each grid exactly once. Inside a brick the coordinate
+// is u = (c + 0.5 - origin) / extent; c + 0.5 - origin is exact (an integer origin below 2^13
+// subtracted from a lattice value), so the division is still the only rounding. Textures that
+// fit are one brick with origin 0 and the same bits as without bricking.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -40,9 +52,16 @@ std::optional<ScalingPolicy> parseScalingPolicy(std::string_view s);
 
 struct GridTexture {
   Levels3 levels{};
-  Dims3 dims{};                      // texels per axis
+  Dims3 dims{};                      // texels per axis (of this brick)
   std::vector<std::uint32_t> codes;  // red-channel codes (texel_format.h), x fastest
+  std::array<int, 3> origin{};       // first texel of the brick in the grid's texture
+  std::array<int, 3> cellLo{};       // node coordinates served: cellLo <= c < cellHi per axis
+  std::array<int, 3> cellHi{};
+  int grid = 0;                      // index of the component grid (combination.h order)
 };
+
+// True when the brick serves node coordinate c (per axis: cellLo <= c < cellHi).
+bool servesCell(const GridTexture& brick, double cx, double cy, double cz);
 
 struct CombinationPass {
   int texture = 0;
@@ -59,21 +78,28 @@ struct CombinationTextures {
   std::vector<CombinationPass> passes;  // in drawing order
 };
 
+inline constexpr int kGuaranteedMax3DTextureSize = 2048;  // GL 4.5 core, minimum of GL_MAX_3D_TEXTURE_SIZE
+
 struct CombinationTextureOptions {
   TexelFormat format = TexelFormat::R16;  // the paper used 16-bit luminance
   TextureSizing sizing = TextureSizing::Padded;
   ScalingPolicy scaling = ScalingPolicy::Scaled;
+  int maxExtent = kGuaranteedMax3DTextureSize;  // texels per axis and brick (>= 3)
 };
 
 // Texel values: f * value / n+ (scaled) or value (unscaled), computed in double and encoded once
 // with encodeTexel. Passes: positive grids with FUNC_ADD, then negative grids with
-// FUNC_REVERSE_SUBTRACT (once scaled, twice unscaled), in the grid order of combination.h.
+// FUNC_REVERSE_SUBTRACT (once scaled, twice unscaled), in the grid order of combination.h; a
+// bricked grid's pass is one pass per brick. Throws std::invalid_argument for maxExtent < 3.
 CombinationTextures buildCombinationTextures(const Combination& combination, const CombinationTextureOptions& options);
 
 // Texels per axis of a grid level under a sizing policy.
 int textureExtent(int level, TextureSizing sizing);
-// The exact texture coordinate of sample coordinate p (see the file comment).
-double textureCoordinate(double p, int level, int extent);
+// The exact texture coordinate of sample coordinate p in a brick starting at texel `origin`
+// (see the file comment).
+double textureCoordinate(double p, int level, int extent, int origin = 0);
+// Number of component grids split into more than one brick.
+int brickedGridCount(const CombinationTextures& textures);
 // GL memory of the textures (all channels of the format).
 std::size_t textureBytes(const CombinationTextures& textures);
 

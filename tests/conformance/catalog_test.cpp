@@ -26,7 +26,7 @@ TEST(Catalog, CoversTheIssueMatrix) {
   for (const char* id : {"sparsegrid.hard.fig9.unscaled_every_order", "sparsegrid.hard.fig9.scaled", "sparsegrid.hard.nodes.l4",
                          "sparsegrid.hard.cell_faces.l4", "sparsegrid.hard.coordinate_one.exact", "sparsegrid.hard.data_extremes.zero",
                          "sparsegrid.hard.data_extremes.constant_one", "sparsegrid.hard.large_negative_surpluses.rgba8",
-                         "sparsegrid.hard.level1", "sparsegrid.hard.level12"})
+                         "sparsegrid.hard.level1", "sparsegrid.hard.level12.rgba8", "sparsegrid.hard.level12.rgba32f"})
     EXPECT_EQ(selectCases(cases, id).size(), 1u) << id;
 }
 
