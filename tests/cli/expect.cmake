@@ -3,6 +3,11 @@ cmake_minimum_required(VERSION 3.25)
 # (|-separated NAME=VALUE), and fails unless its exit status is EXPECT_EXIT (a |-separated set of
 # allowed values) and its combined output matches EXPECT_OUTPUT (a regular expression, optional).
 # Then, optionally, runs CHECK (another |-separated command) which must exit 0.
+# REQUIRES_FILE (optional): a data file the test needs; when it is missing the script stops with
+# a line that the test's SKIP_REGULAR_EXPRESSION turns into "Skipped" (never passed), naming the file.
+if(REQUIRES_FILE AND NOT EXISTS "${REQUIRES_FILE}")
+  message(FATAL_ERROR "VOXREF_TEST_SKIPPED: ${REQUIRES_FILE} is missing (set VOXREF_SHARED_DIR to the shared data folder)")
+endif()
 string(REPLACE "|" ";" command "${COMMAND}")
 if(ENVIRONMENT)
   string(REPLACE "|" ";" env "${ENVIRONMENT}")
