@@ -101,6 +101,16 @@ void ColorTarget::readRedCodes(std::vector<std::uint32_t>& out) const {
 
 namespace {
 
+// The info log of a shader or program (glGetShaderiv/InfoLog or glGetProgramiv/InfoLog).
+template <class GetIv, class GetLog>
+std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
+  GLint len = 0;
+  getIv(object, GL_INFO_LOG_LENGTH, &len);
+  std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
+  getLog(object, len, nullptr, log.data());
+  return log.c_str();
+}
+
 GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view source, std::string_view sourceName) {
   const std::string version = glslNumber >= 450 ? "450 core" : glslNumber >= 400 ? "400 core" : "330 core";
   const std::string prelude =
@@ -110,16 +120,14 @@ GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view s
   const char* text = full.c_str();
   gl.ShaderSource(shader, 1, &text, nullptr);
   gl.CompileShader(shader);
-  GLint ok = 0, len = 0;
+  GLint ok = 0;
   gl.GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   if (!ok) {
-    gl.GetShaderiv(shader, GL_INFO_LOG_LENGTH, &len);
-    std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
-    gl.GetShaderInfoLog(shader, len, nullptr, log.data());
+    const std::string log = infoLog(shader, gl.GetShaderiv, gl.GetShaderInfoLog);
     gl.DeleteShader(shader);
     throw ShaderError(std::string(sourceName) + (stage == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") +
                           " failed to compile",
-                      log.c_str());
+                      log);
   }
   return shader;
 }
@@ -144,14 +152,9 @@ Program::Program(const GlApi& gl, int glslNumber, std::string_view vertexSource,
   gl.LinkProgram(program);
   gl.DeleteShader(vs);
   gl.DeleteShader(fs);
-  GLint ok = 0, len = 0;
+  GLint ok = 0;
   gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    gl.GetProgramiv(program, GL_INFO_LOG_LENGTH, &len);
-    std::string log(static_cast<std::size_t>(std::max(len, 1)), '\0');
-    gl.GetProgramInfoLog(program, len, nullptr, log.data());
-    throw ShaderError(std::string(sourceName) + " failed to link", log.c_str());
-  }
+  if (!ok) throw ShaderError(std::string(sourceName) + " failed to link", infoLog(program, gl.GetProgramiv, gl.GetProgramInfoLog));
   checkGl(gl, "building program " + name_);
 }
 
