@@ -241,7 +241,7 @@ TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFu
   out.stats.refinementBytes = blocks.size() * blockVoxels * 4;
   out.stats.indexBytesAllocated = sampleCount(out.index.dims) * 4 * channelBytes;
   out.stats.refinementBytesAllocated = sampleCount(out.refinement.dims) * 4;
-  out.stats.inputVoxels = static_cast<std::size_t>(L.timeSteps) * side * side * side;
+  out.stats.inputVoxels = static_cast<std::size_t>(L.timeSteps) * sampleCount(series.original);  // padding excluded
   return out;
 }
 

@@ -98,7 +98,7 @@ struct EncodeStats {
   std::size_t indexBytes = 0;       // T n^3 texels (the paper counts only the used slots)
   std::size_t refinementBytes = 0;  // blocks * r^3 * 4
   std::size_t indexBytesAllocated = 0, refinementBytesAllocated = 0;
-  std::size_t inputVoxels = 0;     // T side^3
+  std::size_t inputVoxels = 0;     // T X Y Z of the original extents: ratios exclude the padding
   double ratioAgainst4Bytes() const { return 4.0 * static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes); }
   double ratioAgainst1Byte() const { return static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes); }
 };

@@ -1,0 +1,238 @@
+#include "conformance/io/timevarying/container.h"
+
+#include <zlib.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace voxref::io {
+namespace {
+
+constexpr std::size_t kHeaderBytes = 96;
+constexpr std::uint32_t kMaxExtent = 16384;
+
+std::size_t channelBytes(ref::IndexEncoding e) {
+  return e == ref::IndexEncoding::NormalizedRgba16 ? 2 : e == ref::IndexEncoding::NormalizedFloat ? 4 : 1;
+}
+
+std::uint32_t crc(std::string_view bytes) {
+  uLong c = crc32(0L, Z_NULL, 0);
+  std::size_t done = 0;
+  while (done < bytes.size()) {
+    const uInt n = static_cast<uInt>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
+    c = crc32(c, reinterpret_cast<const Bytef*>(bytes.data() + done), n);
+    done += n;
+  }
+  return static_cast<std::uint32_t>(c);
+}
+
+class Writer {
+ public:
+  void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
+  template <class T>
+  void le(T v) {
+    for (std::size_t i = 0; i < sizeof(T); ++i) out_.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * i)) & 0xff));
+  }
+  std::string& str() { return out_; }
+
+ private:
+  std::string out_;
+};
+
+// Reads fields in order; every read checks the remaining length and names the field on failure.
+class Reader {
+ public:
+  Reader(std::string_view b, std::string name) : b_(b), name_(std::move(name)) {}
+  [[noreturn]] void fail(std::size_t at, const std::string& what) const {
+    throw FormatError(name_ + ": offset " + std::to_string(at) + ": " + what);
+  }
+  std::size_t offset() const { return at_; }
+  template <class T>
+  T le(const char* field) {
+    need(sizeof(T), field);
+    std::uint64_t v = 0;
+    for (std::size_t i = 0; i < sizeof(T); ++i) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b_[at_ + i])) << (8 * i);
+    at_ += sizeof(T);
+    return static_cast<T>(v);
+  }
+  std::string_view take(std::size_t n, const char* field) {
+    need(n, field);
+    const std::string_view v = b_.substr(at_, n);
+    at_ += n;
+    return v;
+  }
+  void need(std::size_t n, const char* field) const {
+    if (b_.size() - at_ < n)
+      fail(at_, std::string(field) + ": expected " + std::to_string(n) + " bytes, the file ends after " + std::to_string(b_.size() - at_));
+  }
+
+ private:
+  std::string_view b_;
+  std::string name_;
+  std::size_t at_ = 0;
+};
+
+bool isPow2(std::uint64_t v) { return v && (v & (v - 1)) == 0; }
+
+}  // namespace
+
+std::string serializeTimeVarying(const TimeVaryingFile& f) {
+  const ref::TimeVaryingTextures& t = f.textures;
+  const ref::TimeVaryingLayout& L = t.layout;
+  Writer w;
+  w.bytes("VXTV", 4);
+  w.le<std::uint16_t>(1);
+  w.le<std::uint16_t>(0);
+  for (int v : {L.side, L.timeSteps, L.level, L.cells, L.blockSide, L.indexSlots, L.blockSlots, L.original[0], L.original[1], L.original[2]})
+    w.le<std::uint32_t>(static_cast<std::uint32_t>(v));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(t.index.encoding));
+  w.le<std::uint8_t>(f.alphaOne == ref::AlphaOnePolicy::Paper ? 0 : 1);
+  w.le<std::uint16_t>(0);
+  w.le<std::uint32_t>(static_cast<std::uint32_t>(t.stats.distinctBlocks));
+  for (std::size_t v : {t.stats.homogeneousCells, t.stats.refinedCells, t.stats.hashHits, t.stats.hashCollisions, t.stats.alphaOneCells})
+    w.le<std::uint64_t>(v);
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(f.transfer.name.size()));
+  w.bytes(f.transfer.name.data(), f.transfer.name.size());
+  for (const ref::Rgba8& c : f.transfer.table) w.bytes(c.data(), 4);
+  const std::size_t cb = channelBytes(t.index.encoding);
+  for (std::uint32_t v : t.index.texels)
+    for (std::size_t i = 0; i < cb; ++i) w.le<std::uint8_t>(static_cast<std::uint8_t>(v >> (8 * i)));
+  w.bytes(t.refinement.texels.data(), t.refinement.texels.size());
+  const std::uint32_t c = crc(w.str());
+  w.le<std::uint32_t>(c);
+  return std::move(w.str());
+}
+
+TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
+  Reader r(b, name);
+  // Section 1: header.
+  if (r.take(4, "magic") != std::string_view("VXTV", 4)) r.fail(0, "magic: expected 'VXTV' (not a .vxtv file)");
+  if (const auto v = r.le<std::uint16_t>("version"); v != 1) r.fail(4, "version: expected 1, got " + std::to_string(v));
+  if (const auto v = r.le<std::uint16_t>("flags"); v != 0) r.fail(6, "flags: expected 0, got " + std::to_string(v));
+  TimeVaryingFile f;
+  ref::TimeVaryingLayout& L = f.textures.layout;
+  auto u32 = [&](const char* field, std::uint32_t lo, std::uint32_t hi) {
+    const std::size_t at = r.offset();
+    const std::uint32_t v = r.le<std::uint32_t>(field);
+    if (v < lo || v > hi)
+      r.fail(at, std::string(field) + ": expected " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + std::to_string(v));
+    return v;
+  };
+  L.side = static_cast<int>(u32("side", 4, 512));
+  if (!isPow2(static_cast<std::uint64_t>(L.side))) r.fail(8, "side: expected a power of two, got " + std::to_string(L.side));
+  L.timeSteps = static_cast<int>(u32("time_steps", 1, 65536));
+  const int maxLevel = std::countr_zero(static_cast<unsigned>(L.side)) - 1;
+  L.level = static_cast<int>(u32("level", 1, static_cast<std::uint32_t>(maxLevel)));
+  L.cells = static_cast<int>(u32("cells", 1u << L.level, 1u << L.level));
+  L.blockSide = static_cast<int>(u32("block_side", static_cast<std::uint32_t>(L.side / L.cells), static_cast<std::uint32_t>(L.side / L.cells)));
+  L.indexSlots = static_cast<int>(u32("index_slots", 1, kMaxExtent / static_cast<std::uint32_t>(L.cells)));
+  if (!isPow2(static_cast<std::uint64_t>(L.indexSlots)) ||
+      static_cast<std::uint64_t>(L.indexSlots) * L.indexSlots * L.indexSlots < static_cast<std::uint64_t>(L.timeSteps))
+    r.fail(28, "index_slots: expected a power of two S with S^3 >= " + std::to_string(L.timeSteps));
+  L.blockSlots = static_cast<int>(u32("block_slots", 1, kMaxExtent / static_cast<std::uint32_t>(L.blockSide)));
+  if (!isPow2(static_cast<std::uint64_t>(L.blockSlots))) r.fail(32, "block_slots: expected a power of two");
+  for (int a = 0; a < 3; ++a) L.original[a] = static_cast<int>(u32("original extent", 1, static_cast<std::uint32_t>(L.side)));
+  const std::size_t encodingAt = r.offset();
+  const auto enc = r.le<std::uint8_t>("encoding");
+  if (enc > 3) r.fail(encodingAt, "encoding: expected 0..3, got " + std::to_string(enc));
+  f.textures.index.encoding = static_cast<ref::IndexEncoding>(enc);
+  if (f.textures.index.encoding == ref::IndexEncoding::BlockRgba8 && L.blockSlots > 256)
+    r.fail(32, "block_slots: block_rgba8 addresses at most 256 slots per axis");
+  const auto policy = r.le<std::uint8_t>("alpha_one_policy");
+  if (policy > 1) r.fail(encodingAt + 1, "alpha_one_policy: expected 0 or 1, got " + std::to_string(policy));
+  f.alphaOne = policy == 0 ? ref::AlphaOnePolicy::Paper : ref::AlphaOnePolicy::Refine;
+  if (r.le<std::uint16_t>("reserved") != 0) r.fail(encodingAt + 2, "reserved: expected 0");
+  const std::uint64_t blockCapacity = static_cast<std::uint64_t>(L.blockSlots) * L.blockSlots * L.blockSlots;
+  const std::size_t distinctAt = r.offset();
+  const std::uint64_t distinct = r.le<std::uint32_t>("distinct_blocks");
+  if (distinct > blockCapacity) r.fail(distinctAt, "distinct_blocks: " + std::to_string(distinct) + " exceeds the " + std::to_string(blockCapacity) + " block slots");
+  ref::EncodeStats& st = f.textures.stats;
+  st.distinctBlocks = distinct;
+  st.homogeneousCells = r.le<std::uint64_t>("homogeneous_cells");
+  const std::size_t refinedAt = r.offset();
+  st.refinedCells = r.le<std::uint64_t>("refined_cells");
+  const std::uint64_t cellsTotal = static_cast<std::uint64_t>(L.timeSteps) * L.cells * L.cells * L.cells;
+  if (st.homogeneousCells > cellsTotal || st.refinedCells != cellsTotal - st.homogeneousCells)
+    r.fail(refinedAt, "refined_cells: homogeneous + refined must be " + std::to_string(cellsTotal));
+  st.hashHits = r.le<std::uint64_t>("hash_hits");
+  st.hashCollisions = r.le<std::uint64_t>("hash_collisions");
+  st.alphaOneCells = r.le<std::uint64_t>("alpha_one_cells");
+
+  // Section 2: transfer function.
+  const std::size_t nameAt = r.offset();
+  const auto nameLength = r.le<std::uint8_t>("transfer function name length");
+  if (nameLength < 1 || nameLength > 64) r.fail(nameAt, "transfer function name length: expected 1..64, got " + std::to_string(nameLength));
+  f.transfer.name = std::string(r.take(nameLength, "transfer function name"));
+  const std::string_view table = r.take(1024, "transfer function table");
+  for (int i = 0; i < 256; ++i) std::memcpy(f.transfer.table[static_cast<std::size_t>(i)].data(), table.data() + 4 * i, 4);
+
+  // Sections 3 and 4: sizes are checked against the file before anything is allocated.
+  const std::uint64_t indexSide = static_cast<std::uint64_t>(L.indexSlots) * L.cells;
+  const std::uint64_t refSide = static_cast<std::uint64_t>(L.blockSlots) * L.blockSide;
+  const std::size_t cb = channelBytes(f.textures.index.encoding);
+  const std::uint64_t indexBytes = indexSide * indexSide * indexSide * 4 * cb;
+  const std::uint64_t refBytes = refSide * refSide * refSide * 4;
+  const std::uint64_t expectedTotal = r.offset() + indexBytes + refBytes + 4;
+  if (expectedTotal != b.size())
+    r.fail(r.offset(), "the header describes " + std::to_string(expectedTotal) + " bytes in all, the file has " + std::to_string(b.size()) +
+                           (b.size() < expectedTotal ? " (truncated)" : " (trailing bytes)"));
+  const std::uint32_t stored = static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 4])) |
+                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 3])) << 8 |
+                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 2])) << 16 |
+                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 1])) << 24;
+  if (crc(b.substr(0, b.size() - 4)) != stored) r.fail(b.size() - 4, "trailer: CRC-32 mismatch (the file is corrupt)");
+
+  ref::IndexTexture& index = f.textures.index;
+  index.dims = {static_cast<int>(indexSide), static_cast<int>(indexSide), static_cast<int>(indexSide)};
+  const std::size_t indexAt = r.offset();
+  const std::string_view ib = r.take(static_cast<std::size_t>(indexBytes), "index texture");
+  index.texels.resize(static_cast<std::size_t>(indexBytes / cb));
+  for (std::size_t i = 0; i < index.texels.size(); ++i) {
+    std::uint32_t v = 0;
+    for (std::size_t k = 0; k < cb; ++k) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(ib[i * cb + k])) << (8 * k);
+    index.texels[i] = v;
+  }
+  ref::RefinementTexture& ref = f.textures.refinement;
+  ref.dims = {static_cast<int>(refSide), static_cast<int>(refSide), static_cast<int>(refSide)};
+  const std::string_view rb = r.take(static_cast<std::size_t>(refBytes), "refinement texture");
+  ref.texels.assign(rb.begin(), rb.end());
+
+  // Every refinement address must name one of the stored blocks.
+  for (std::size_t texel = 0; texel < index.texels.size() / 4; ++texel) {
+    const std::uint32_t* t = &index.texels[4 * texel];
+    if (!ref::isRefinementFlag(index.encoding, t)) continue;
+    if (index.encoding == ref::IndexEncoding::NormalizedFloat)
+      for (int a = 0; a < 3; ++a) {
+        const float v = std::bit_cast<float>(t[a]);
+        if (!(v >= 0.0f && v <= 1.0f)) r.fail(indexAt + texel * 4 * cb, "index texel " + std::to_string(texel) + ": address is not a number in [0, 1]");
+      }
+    const auto k = ref::blockOfIndexTexel(L, index.encoding, t);
+    const std::uint64_t slot = static_cast<std::uint64_t>(k[0]) + static_cast<std::uint64_t>(L.blockSlots) * (k[1] + static_cast<std::uint64_t>(L.blockSlots) * k[2]);
+    if (k[0] >= L.blockSlots || k[1] >= L.blockSlots || k[2] >= L.blockSlots || slot >= distinct)
+      r.fail(indexAt + texel * 4 * cb, "index texel " + std::to_string(texel) + ": refinement address (" + std::to_string(k[0]) + ", " +
+                                           std::to_string(k[1]) + ", " + std::to_string(k[2]) + ") is not one of the " + std::to_string(distinct) + " blocks");
+  }
+  st.indexBytes = static_cast<std::size_t>(L.timeSteps) * L.cells * L.cells * L.cells * 4 * cb;
+  st.refinementBytes = static_cast<std::size_t>(distinct) * L.blockSide * L.blockSide * L.blockSide * 4;
+  st.indexBytesAllocated = static_cast<std::size_t>(indexBytes);
+  st.refinementBytesAllocated = static_cast<std::size_t>(refBytes);
+  st.inputVoxels = static_cast<std::size_t>(L.timeSteps) * ref::sampleCount(L.original);
+  return f;
+}
+
+void writeTimeVarying(const std::filesystem::path& path, const TimeVaryingFile& file) { writeFileAtomically(path, serializeTimeVarying(file)); }
+
+TimeVaryingFile readTimeVarying(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path.string() + " does not exist");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open " + path.string());
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parseTimeVarying(ss.str(), path.string());
+}
+
+}  // namespace voxref::io
