@@ -12,7 +12,7 @@ struct EffectText {
   std::string_view description;
 };
 
-constexpr std::array<EffectText, 25> kEffects{{
+constexpr std::array<EffectText, 31> kEffects{{
     {Effect::AddressDivision, "address.float32_division", "texture coordinate (p 2^l + 0.5) / D rounded in float32"},
     {Effect::TextureBricks, "address.texture_bricks", "grid textures split into overlapping bricks; per-brick address and discard"},
     {Effect::TexelUnorm8, "texel.unorm8", "texel values quantized to unorm8"},
@@ -37,6 +37,12 @@ constexpr std::array<EffectText, 25> kEffects{{
     {Effect::StoreHalfTowardZeroPerPass, "store.half_toward_zero_per_pass", "RGBA16F stored as binary16 toward zero after every pass"},
     {Effect::FloatTileCache, "framebuffer.float_tile_cache", "float32 tile cache: per-pass clamp, one quantization at read-back"},
     {Effect::StoreHalfTowardZeroOnFlush, "store.half_toward_zero_on_flush", "RGBA16F accumulated in float32, stored toward zero once"},
+    {Effect::BlendAlphaMulnorm, "blend.alpha_mulnorm", "RGBA8 SRC_ALPHA/ONE_MINUS_SRC_ALPHA: 8-bit mulnorm products, saturating add"},
+    {Effect::BlendAlphaFloat, "blend.alpha_float32", "SRC_ALPHA/ONE_MINUS_SRC_ALPHA in float32, clamped per pass"},
+    {Effect::DecodeUnormAddress, "decode.unorm_address", "refinement origins read from unorm texels: k * fl(1/(2^b-1))"},
+    {Effect::DecodeGlslMod, "decode.glsl_mod", "position inside a coarse cell by mod(x, y) = x - y floor(x / y) in float32"},
+    {Effect::DecodeModByZeroFolded, "decode.mod_by_zero_folded", "literal shader: mod(x, 8 / 128) = mod(x, 0) folded to x"},
+    {Effect::DecodeIntegerAddress, "decode.integer_address", "integer block and voxel numbers, texel centres or texelFetch"},
     {Effect::FlushEachPass, "framebuffer.flush_each_pass", "glFinish after every pass: tile stored and reloaded per pass"},
 }};
 

@@ -34,6 +34,12 @@ enum class Effect {
   FloatTileCache,           // softpipe: float32 tile, source and result clamped per pass, stored once
   StoreHalfTowardZeroOnFlush,  // softpipe RGBA16F: float32 accumulation, binary16 toward zero once
   FlushEachPass,            // glFinish after every pass: the tile is stored and reloaded per pass
+  BlendAlphaMulnorm,        // RGBA8 SRC_ALPHA / ONE_MINUS_SRC_ALPHA in 8 bits: mulnorm products, saturating add
+  BlendAlphaFloat,          // SRC_ALPHA / ONE_MINUS_SRC_ALPHA in float32 (softpipe's tile)
+  DecodeUnormAddress,       // refinement origins read back from unorm texels (k * fl(1/(2^b-1)))
+  DecodeGlslMod,            // the position inside a coarse cell by GLSL mod(): x - y floor(x / y)
+  DecodeModByZeroFolded,    // the literal shader's mod(x, 8 / 128 = 0) folded to x by the compiler
+  DecodeIntegerAddress,     // integer block and voxel numbers (texel centres or texelFetch)
 };
 
 std::string_view effectId(Effect e);           // dotted id: "sampler.aos_8bit"

@@ -104,3 +104,43 @@ std::uint32_t BlendEmu::resolve(const PixelState& px) const {
 }
 
 }  // namespace voxref::emu
+
+namespace voxref::emu {
+
+std::uint8_t mulnorm8(std::uint8_t x, std::uint8_t y) {
+  const unsigned t = static_cast<unsigned>(x) * y;
+  return static_cast<std::uint8_t>((t + (t >> 8) + 128) >> 8);
+}
+
+void AlphaBlendEmu::blend(Pixel& px, const std::array<float, 4>& src) const {
+  if (profile_->framebuffer == FramebufferModel::QuantizePerPass) {
+    std::array<std::uint8_t, 4> s{};
+    for (int c = 0; c < 4; ++c) s[c] = static_cast<std::uint8_t>(floatToUnormHalfEven(src[c], 8));
+    const std::uint8_t a = s[3], oneMinusA = static_cast<std::uint8_t>(255 - a);
+    for (int c = 0; c < 4; ++c) px.code[c] = static_cast<std::uint8_t>(std::min(255, mulnorm8(s[c], a) + mulnorm8(px.code[c], oneMinusA)));
+    return;
+  }
+  auto clampUnit = [](float x) { return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f; };  // u_math.h CLAMP: NaN -> 0
+  const float a = clampUnit(src[3]);
+  const float oneMinusA = 1.0f - a;
+  for (int c = 0; c < 4; ++c) {
+    const float s = clampUnit(src[c]);
+    const float sa = s * a;
+    const float dOma = px.value[c] * oneMinusA;
+    px.value[c] = clampUnit(sa + dOma);
+  }
+}
+
+std::array<std::uint8_t, 4> AlphaBlendEmu::resolve(const Pixel& px) const {
+  if (profile_->framebuffer == FramebufferModel::QuantizePerPass) return px.code;
+  std::array<std::uint8_t, 4> out{};
+  for (int c = 0; c < 4; ++c) out[c] = static_cast<std::uint8_t>(floatToUnormHalfEven(px.value[c], 8));
+  return out;
+}
+
+std::vector<Effect> AlphaBlendEmu::effects() const {
+  if (profile_->framebuffer == FramebufferModel::QuantizePerPass) return {Effect::OutputUnorm8, Effect::BlendAlphaMulnorm};
+  return {Effect::FloatTileCache, Effect::BlendAlphaFloat, Effect::OutputUnorm8};
+}
+
+}  // namespace voxref::emu

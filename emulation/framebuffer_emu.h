@@ -15,6 +15,7 @@
 // precision of the 1999 paper's hardware; no GL implementation runs it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,5 +52,34 @@ class BlendEmu {
   bool flushEachPass_;
   int bits_;  // unorm bits, 0 for float formats
 };
+
+// RGBA8 blending with glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), GL_FUNC_ADD: the
+// compositing of view-aligned slices. Bit-exact against Mesa 22.3.6 (research note 2, all 2^24
+// (src, alpha, dst) byte combinations checked on both drivers):
+//   llvmpipe  s = clamp(RNE(fl(min(x, 1) * 255))) per channel, a = s.alpha;
+//             out = min(255, mulnorm(s, a) + mulnorm(d, 255 - a)) with
+//             mulnorm(x, y) = (t + (t >> 8) + 128) >> 8, t = x y (lp_bld_arit.c lp_build_mul_norm);
+//             stored after every draw
+//   softpipe  s = clamp(x, 0, 1), a = s.alpha, oma = fl(1 - a);
+//             r = clamp(fl(fl(s * a) + fl(d * oma)), 0, 1) in the float tile; RNE(r * 255) at flush
+class AlphaBlendEmu {
+ public:
+  struct Pixel {
+    std::array<std::uint8_t, 4> code{};  // llvmpipe
+    std::array<float, 4> value{};        // softpipe tile
+  };
+  explicit AlphaBlendEmu(const PrecisionProfile& profile) : profile_(&profile) {}
+  Pixel cleared() const { return {}; }  // glClearColor(0, 0, 0, 0)
+  void blend(Pixel& pixel, const std::array<float, 4>& src) const;
+  std::array<std::uint8_t, 4> resolve(const Pixel& pixel) const;
+  std::vector<Effect> effects() const;
+
+ private:
+  const PrecisionProfile* profile_;
+};
+
+// mulnorm(x, y) of llvmpipe: (t + (t >> 8) + 128) >> 8 with t = x y. One below round(x y / 255)
+// for 12 of the 65536 products (for example 152 * 229).
+std::uint8_t mulnorm8(std::uint8_t x, std::uint8_t y);
 
 }  // namespace voxref::emu

@@ -33,6 +33,7 @@ constexpr PrecisionProfile softpipe() {
   p.framebuffer = FramebufferModel::FloatTileCache;
   p.unorm16Store = UnormRounding::HalfUp;  // util_iround in the generated pack function
   p.textureTileCache.aliasing = true;
+  p.texelFetchOutOfRangeClamps = true;
   p.maxModelledTargetWidth = 320;          // 5 tile columns of 64: no two tiles share a cache slot
   p.maxModelledTargetHeight = 640;
   p.environment = "GALLIUM_DRIVER=softpipe";

@@ -57,6 +57,13 @@ struct PrecisionProfile {
   LerpArithmetic floatLerp = LerpArithmetic::Unfused;
   bool flushDenormals = false;  // FTZ/DAZ in texture filtering and float32 blending
   TextureTileCache textureTileCache;  // softpipe only
+  // The compiler folds a product with the constant 0 to 0, so GLSL's mod(x, 0.0) written with a
+  // literal zero is x (Mesa's nir_opt_algebraic `~fmul(a, 0.0)`); with a zero it cannot see (a
+  // uniform) mod(x, 0) is x - 0 * floor(x / 0) = NaN. Measured on both Mesa drivers.
+  bool foldsMultiplyByConstantZero = true;
+  // texelFetch outside the texture (undefined by the spec): llvmpipe returns (0, 0, 0, 0),
+  // softpipe clamps every coordinate to the edge (measured, research note 2).
+  bool texelFetchOutOfRangeClamps = false;
   FramebufferModel framebuffer = FramebufferModel::QuantizePerPass;
   UnormRounding unorm16Store = UnormRounding::HalfEven;  // float -> unorm16 of the colour buffer
   // The largest colour target the model holds for: softpipe's 50-entry tile cache evicts (and

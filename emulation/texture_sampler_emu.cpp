@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <bit>
+#include <climits>
+#include <cstdint>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -201,16 +203,16 @@ TextureSamplerEmu::FixedAxis TextureSamplerEmu::aosLinearAxis(float s, int n) co
 
 // --- Nearest ---------------------------------------------------------------------------------
 
-int TextureSamplerEmu::nearestAxis(float s, int n) const {
+int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& profile) {
   const float nf = static_cast<float>(n);
-  if (profile_->sampler == SamplerFamily::Softpipe) {
+  if (profile.sampler == SamplerFamily::Softpipe) {
     const float u = s * nf;  // sp_tex_sample.c:133-195
-    switch (sampler_.wrap) {
+    switch (wrap) {
       case ref::Wrap::Repeat: return softpipeRepeat(softpipeIfloor(u), n);
       case ref::Wrap::ClampToEdge:
         if (u < 0.5f) return 0;
         if (u > nf - 0.5f) return n - 1;
-        return softpipeIfloor(u);
+        return std::clamp(softpipeIfloor(u), 0, n - 1);  // NaN: util_ifloor gives 0
       case ref::Wrap::ClampToBorder:
         if (u <= -0.5f) return -1;
         if (u >= nf + 0.5f) return n;
@@ -218,20 +220,17 @@ int TextureSamplerEmu::nearestAxis(float s, int n) const {
     }
     return 0;
   }
-  switch (sampler_.wrap) {  // lp_bld_sample_soa.c:686-815 (and lp_bld_sample_aos.c:77-136)
+  // Float to int as cvttps2dq / cvtps2dq do it: NaN and out-of-range values give INT_MIN.
+  auto toInt = [](float v) { return std::isnan(v) || std::fabs(v) >= 2147483648.0f ? INT32_MIN : static_cast<int>(v); };
+  switch (wrap) {  // lp_bld_sample_soa.c:686-815 (and lp_bld_sample_aos.c:77-136)
     case ref::Wrap::Repeat:
-      if (isPowerOfTwo(n)) return static_cast<int>(std::floor(s * nf)) & (n - 1);
-      return static_cast<int>(std::trunc(std::min(fractOf(s), 0x1.fffffep-1f) * nf));
-    case ref::Wrap::ClampToEdge: {
-      const float u = s * nf;
-      if (std::isnan(u) || std::fabs(u) > 2.0e9f) return u > 0.0f ? n - 1 : 0;
-      return std::clamp(static_cast<int>(std::trunc(u)), 0, n - 1);
-    }
+      if ((n & (n - 1)) == 0) return toInt(std::floor(s * nf)) & (n - 1);
+      return toInt(std::trunc(std::min(fractOf(s), 0x1.fffffep-1f) * nf));
+    case ref::Wrap::ClampToEdge: return std::clamp(toInt(std::trunc(s * nf)), 0, n - 1);
     case ref::Wrap::ClampToBorder: {
-      const float u = std::floor(s * nf);
-      if (!(u >= 0.0f)) return -1;
-      if (u >= nf) return n;
-      return static_cast<int>(u);
+      const int i = toInt(std::floor(s * nf));
+      if (i == INT32_MIN || i < 0) return -1;
+      return std::min(i, n);
     }
   }
   return 0;
@@ -285,7 +284,8 @@ void TextureSamplerEmu::aliasTaps(const int x[2], const int y[2], const int z[2]
 float TextureSamplerEmu::sampleRed(float s, float t, float r, bool* unmodelled) const {
   switch (path_) {
     case SamplerPath::Nearest: {
-      const int x = nearestAxis(s, dims_[0]), y = nearestAxis(t, dims_[1]), z = nearestAxis(r, dims_[2]);
+      const int x = nearestTexelIndex(s, dims_[0], sampler_.wrap, *profile_), y = nearestTexelIndex(t, dims_[1], sampler_.wrap, *profile_),
+                z = nearestTexelIndex(r, dims_[2], sampler_.wrap, *profile_);
       return texel(x, y, z);
     }
     case SamplerPath::Aos8Linear: {

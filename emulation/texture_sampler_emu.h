@@ -25,6 +25,12 @@ namespace voxref::emu {
 
 enum class SamplerPath { Aos8Linear, FloatLinear, Nearest };
 
+// The texel index NEAREST selects along an axis of n texels for coordinate s (before the border
+// test: -1 or n mean "outside" for CLAMP_TO_BORDER). NaN selects texel 0 on both drivers with
+// CLAMP_TO_EDGE; +-infinity gives 0 on llvmpipe (the float-to-int conversion yields INT_MIN) and
+// 0 / n - 1 on softpipe (measured, research note 2).
+int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& profile);
+
 class TextureSamplerEmu {
  public:
   // `codes` (red-channel codes, texel_format.h) must outlive the sampler and hold dims' texels.
@@ -49,7 +55,6 @@ class TextureSamplerEmu {
   };
   FloatAxis floatLinearAxis(float s, int n) const;
   FixedAxis aosLinearAxis(float s, int n) const;
-  int nearestAxis(float s, int n) const;
   float texel(int x, int y, int z) const;           // value, or border when out of range
   std::uint32_t texelCode8(int x, int y, int z) const;  // AoS: the stored byte
   float lerp(float w, float a, float b) const;

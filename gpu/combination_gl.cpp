@@ -20,7 +20,7 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
   gridTextures.reserve(textures.textures.size());
   for (const ref::GridTexture& t : textures.textures)
     gridTextures.emplace_back(gl, info.max3DTextureSize, t.dims, textures.format, t.codes, sampler);
-  Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kCombinationFrag, "combination.frag");
+  Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kCombinationFrag, "combination.frag", shaders::kSamplePointGlsl);
   VertexArray vao(gl);
 
   target.bind();

@@ -64,6 +64,7 @@ GlApi loadGlApi(const GetProcAddress& get) {
   load(get, gl.Uniform1i, "glUniform1i");
   load(get, gl.Uniform1f, "glUniform1f");
   load(get, gl.Uniform3f, "glUniform3f");
+  load(get, gl.Uniform3i, "glUniform3i");
   load(get, gl.GenVertexArrays, "glGenVertexArrays");
   load(get, gl.DeleteVertexArrays, "glDeleteVertexArrays");
   load(get, gl.BindVertexArray, "glBindVertexArray");

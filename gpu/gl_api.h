@@ -67,6 +67,7 @@ struct GlApi {
   PFNGLUNIFORM1IPROC Uniform1i = nullptr;
   PFNGLUNIFORM1FPROC Uniform1f = nullptr;
   PFNGLUNIFORM3FPROC Uniform3f = nullptr;
+  PFNGLUNIFORM3IPROC Uniform3i = nullptr;
   // Vertex arrays and drawing
   PFNGLGENVERTEXARRAYSPROC GenVertexArrays = nullptr;
   PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays = nullptr;

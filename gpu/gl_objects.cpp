@@ -1,5 +1,6 @@
 #include "gpu/gl_objects.h"
 
+#include <cstdio>
 #include <cstring>
 
 #include "gpu/gl_error.h"
@@ -25,19 +26,26 @@ GlHandle::~GlHandle() {
 // --- Texture3D -------------------------------------------------------------------------------
 
 Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, ref::TexelFormat format,
-                     const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler) {
+                     const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler)
+    : Texture3D(gl, max3DTextureSize, dims,
+                [&] {
+                  const TexelUpload up = texelUpload(format);
+                  return TextureUpload{up.internalFormat, up.format, up.type};
+                }(),
+                packTexels(format, codes).data(), sampler) {}
+
+Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& up, const void* pixels,
+                     const ref::SamplerState& sampler) {
   for (int e : dims)
     if (e > max3DTextureSize)
       throw GlUnsupported("a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
                           " texture exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3DTextureSize));
-  const TexelUpload up = texelUpload(format);
-  const std::vector<unsigned char> bytes = packTexels(format, codes);
   GLuint id = 0;
   gl.GenTextures(1, &id);
   handle_ = GlHandle(&gl, id, [](const GlApi& g, GLuint i) { g.DeleteTextures(1, &i); });
   gl.BindTexture(GL_TEXTURE_3D, id);
   gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl.TexImage3D(GL_TEXTURE_3D, 0, up.internalFormat, dims[0], dims[1], dims[2], 0, up.format, up.type, bytes.data());
+  gl.TexImage3D(GL_TEXTURE_3D, 0, up.internalFormat, dims[0], dims[1], dims[2], 0, up.format, up.type, pixels);
   const GLint filter = sampler.filter == ref::Filter::Linear ? GL_LINEAR : GL_NEAREST;
   const GLint wrap = glWrap(sampler.wrap);
   gl.TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, filter);
@@ -49,7 +57,11 @@ Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& di
   gl.TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 0);
   const GLfloat border[4] = {static_cast<GLfloat>(sampler.borderRed), 0.0f, 0.0f, 0.0f};
   gl.TexParameterfv(GL_TEXTURE_3D, GL_TEXTURE_BORDER_COLOR, border);
-  checkGl(gl, "creating a " + std::string(ref::name(format)) + " 3D texture");
+  checkGl(gl, "creating a 3D texture (internal format 0x" + [&] {
+    char b[16];
+    std::snprintf(b, sizeof b, "%x", up.internalFormat);
+    return std::string(b);
+  }() + ")");
 }
 
 // --- ColorTarget -----------------------------------------------------------------------------
@@ -97,6 +109,14 @@ void ColorTarget::readRedCodes(std::vector<std::uint32_t>& out) const {
   }
 }
 
+void ColorTarget::readRgba8(std::vector<std::array<std::uint8_t, 4>>& out) const {
+  if (format_ != ref::FramebufferFormat::RGBA8) throw GlError("readRgba8 reads RGBA8 targets only");
+  out.resize(static_cast<std::size_t>(width_) * height_);
+  gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.data());
+  checkGl(*gl_, "reading back the rgba8 target");
+}
+
 // --- Program ---------------------------------------------------------------------------------
 
 namespace {
@@ -111,10 +131,11 @@ std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
   return log.c_str();
 }
 
-GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view source, std::string_view sourceName) {
+GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view source, std::string_view sourceName,
+               std::string_view library = {}) {
   const std::string version = glslNumber >= 450 ? "450 core" : glslNumber >= 400 ? "400 core" : "330 core";
-  const std::string prelude =
-      "#version " + version + "\n#define PRECISE " + (glslNumber >= 400 ? "precise" : "") + "\n#line 1\n";
+  const std::string prelude = "#version " + version + "\n#define PRECISE " + (glslNumber >= 400 ? "precise" : "") + "\n" +
+                              std::string(library) + "\n#line 1\n";
   const std::string full = prelude + std::string(source);
   const GLuint shader = gl.CreateShader(stage);
   const char* text = full.c_str();
@@ -135,12 +156,12 @@ GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view s
 }  // namespace
 
 Program::Program(const GlApi& gl, int glslNumber, std::string_view vertexSource, std::string_view fragmentSource,
-                 std::string_view sourceName)
+                 std::string_view sourceName, std::string_view fragmentLibrary)
     : gl_(&gl), name_(sourceName) {
   const GLuint vs = compile(gl, GL_VERTEX_SHADER, glslNumber, vertexSource, sourceName);
   GLuint fs = 0;
   try {
-    fs = compile(gl, GL_FRAGMENT_SHADER, glslNumber, fragmentSource, sourceName);
+    fs = compile(gl, GL_FRAGMENT_SHADER, glslNumber, fragmentSource, sourceName, fragmentLibrary);
   } catch (...) {
     gl.DeleteShader(vs);
     throw;

@@ -5,6 +5,7 @@
 
 #include <GL/glcorearb.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -36,10 +37,19 @@ class GlHandle {
 // A 3D texture holding stored red-channel codes (texel_format.h) uploaded without conversion:
 // unsigned bytes / shorts for unorm formats, GL_HALF_FLOAT bits, GL_FLOAT bits. One level, no
 // mipmaps. Throws GlUnsupported when an extent exceeds GL_MAX_3D_TEXTURE_SIZE.
+struct TextureUpload {
+  GLint internalFormat;
+  GLenum format;
+  GLenum type;
+};
+
 class Texture3D {
  public:
   Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, ref::TexelFormat format,
             const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler);
+  // Any format: `pixels` in the layout of `upload` (glTexImage3D's format and type).
+  Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& upload, const void* pixels,
+            const ref::SamplerState& sampler);
   GLuint id() const { return handle_.id(); }
 
  private:
@@ -55,6 +65,8 @@ class ColorTarget {
   // The red channel's stored codes (unorm codes, half bits or float bits) of the whole target,
   // read with the format's native type, row 0 at the bottom.
   void readRedCodes(std::vector<std::uint32_t>& out) const;
+  // All four channels of an RGBA8 target as bytes, row 0 at the bottom (GlError for other formats).
+  void readRgba8(std::vector<std::array<std::uint8_t, 4>>& out) const;
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -67,12 +79,13 @@ class ColorTarget {
 };
 
 // A linked program. The sources get a prelude: `#version <glsl>`, `#define PRECISE precise`
-// (empty before GLSL 4.00, which has no `precise`), then `#line 1`, so info-log line numbers are
-// the source's own. Throws ShaderError with the log and the source name.
+// (empty before GLSL 4.00, which has no `precise`), the fragment library (shared functions such as
+// sample_point.glsl), then `#line 1`, so info-log line numbers are the source's own. Throws
+// ShaderError with the log and the source name.
 class Program {
  public:
   Program(const GlApi& gl, int glslNumber, std::string_view vertexSource, std::string_view fragmentSource,
-          std::string_view sourceName);
+          std::string_view sourceName, std::string_view fragmentLibrary = {});
   void use() const;
   // Location of a uniform; throws GlError if the program has no active uniform of that name.
   GLint uniform(const char* name) const;

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace voxref::cli {
 
@@ -41,5 +42,34 @@ struct BenchOptions {
   int threads = 0;
 };
 int runBench(const BenchOptions& o);
+
+struct EncodeOptions {
+  std::string codec;
+  std::vector<std::filesystem::path> inputs;  // one raw volume per time step
+  std::vector<int> dims;
+  std::string type = "uint8";
+  bool plume = false;  // the synthetic discharge plume instead of files
+  double sparseness = 0.0;
+  int plumeSide = 128, plumeSteps = 36;
+  std::string transfer = "plume";
+  std::string level = "auto";
+  std::string encoding = "normalized_rgba8";
+  std::string alphaOne = "refine";
+  std::filesystem::path out;
+};
+int runEncode(const EncodeOptions& o);
+
+struct DecodeOptions {
+  std::string codec;
+  std::filesystem::path input, out;
+  int step = -1;  // -1: every step
+};
+int runDecode(const DecodeOptions& o);
+
+struct InfoOptions {
+  std::string codec;
+  std::filesystem::path input;
+};
+int runInfo(const InfoOptions& o);
 
 }  // namespace voxref::cli

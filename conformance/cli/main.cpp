@@ -51,6 +51,35 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--threads", bench.threads, "CPU threads for CPU paths (0: all)")->default_val(0);
   benchCmd->add_flag("--quick", bench.quick, "small sizes and few levels, for a smoke run");
 
+  EncodeOptions encode;
+  auto* encodeCmd = app.add_subcommand("encode", "encode volumes with a codec into a file");
+  encodeCmd->add_option("--codec", encode.codec, "timevarying")->required();
+  encodeCmd->add_option("--input", encode.inputs, "raw volume files, one per time step (.raw or .raw.gz)");
+  encodeCmd->add_option("--dims", encode.dims, "X Y Z extents of every input volume")->expected(3);
+  encodeCmd->add_option("--type", encode.type, "voxel type of the inputs")->default_val("uint8");
+  encodeCmd->add_flag("--plume", encode.plume, "encode the synthetic discharge plume instead of files");
+  encodeCmd->add_option("--sparseness", encode.sparseness, "plume: fraction of zero voxels to aim for (e.g. 0.9965)");
+  encodeCmd->add_option("--side", encode.plumeSide, "plume: volume side (power of two)")->default_val(128);
+  encodeCmd->add_option("--steps", encode.plumeSteps, "plume: time steps")->default_val(36);
+  encodeCmd->add_option("--tf", encode.transfer, "transfer function: plume, opaque, gray")->default_val("plume");
+  encodeCmd->add_option("--level", encode.level, "subdivision level, or auto (smallest output)")->default_val("auto");
+  encodeCmd->add_option("--encoding", encode.encoding, "index encoding: normalized_rgba8 (paper), normalized_rgba16, normalized_float, block_rgba8")
+      ->default_val("normalized_rgba8");
+  encodeCmd->add_option("--alpha-one", encode.alphaOne, "homogeneous colours with alpha 255: refine (lossless) or paper")->default_val("refine");
+  encodeCmd->add_option("--out", encode.out, "output file (.vxtv)")->required();
+
+  DecodeOptions decode;
+  auto* decodeCmd = app.add_subcommand("decode", "decode a codec file into raw volumes");
+  decodeCmd->add_option("--codec", decode.codec, "timevarying")->required();
+  decodeCmd->add_option("--input", decode.input, "file to decode")->required();
+  decodeCmd->add_option("--out", decode.out, "output directory (step_NNN.rgba: RGBA8 voxels, x fastest)")->required();
+  decodeCmd->add_option("--step", decode.step, "only this time step")->default_val(-1);
+
+  InfoOptions info;
+  auto* infoCmd = app.add_subcommand("info", "describe a codec file: layout, padding, statistics");
+  infoCmd->add_option("--codec", info.codec, "timevarying")->required();
+  infoCmd->add_option("--input", info.input, "file to describe")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -64,6 +93,9 @@ int main(int argc, char** argv) {
     }
     if (*renderCmd) return runRender(render);
     if (*benchCmd) return runBench(bench);
+    if (*encodeCmd) return runEncode(encode);
+    if (*decodeCmd) return runDecode(decode);
+    if (*infoCmd) return runInfo(info);
   } catch (const std::exception& e) {
     std::cerr << "voxref: " << e.what() << "\n";
     return 2;

@@ -1,5 +1,7 @@
 #include "reference/timevarying/plume.h"
 
+#include "reference/common/fields.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -54,6 +56,26 @@ TimeSeries dischargePlume(const PlumeOptions& o) {
     std::vector<std::uint8_t> vol(c.size());
     for (std::size_t i = 0; i < c.size(); ++i) vol[i] = static_cast<std::uint8_t>(std::min(255.0, std::floor(o.gain * c[i])));
     s.steps.push_back(std::move(vol));
+  }
+  return s;
+}
+
+TimeSeries driftingBlobs(int side, int steps) {
+  if (side < 4 || (side & (side - 1)) != 0) throw std::invalid_argument("series side must be a power of two >= 4");
+  const Field blobs = analyticField("gaussian_blobs");
+  TimeSeries s;
+  s.side = side;
+  s.original = {side, side, side};
+  for (int t = 0; t < steps; ++t) {
+    std::vector<std::uint8_t> v(static_cast<std::size_t>(side) * side * side);
+    std::size_t i = 0;
+    for (int z = 0; z < side; ++z)
+      for (int y = 0; y < side; ++y)
+        for (int x = 0; x < side; ++x, ++i) {
+          const double value = blobs((x + 0.5 - t) / side, (y + 0.5) / side, (z + 0.5) / side);
+          v[i] = static_cast<std::uint8_t>(std::min(255.0, 32.0 * std::floor(value * 8.0)));
+        }
+    s.steps.push_back(std::move(v));
   }
   return s;
 }

@@ -31,4 +31,9 @@ double sparseness(const TimeSeries& series);
 // `achieved` (optional) receives the sparseness reached.
 TimeSeries dischargePlumeWithSparseness(PlumeOptions options, double target, double* achieved = nullptr);
 
+// A dense series for conformance: the gaussian_blobs field (reference/common/fields.h) drifting
+// along x by one voxel per step, quantized to multiples of 32 so that large regions are
+// homogeneous and the rest is refined. side^3 voxels, `steps` steps; deterministic.
+TimeSeries driftingBlobs(int side, int steps);
+
 }  // namespace voxref::ref

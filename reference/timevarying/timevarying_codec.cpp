@@ -135,7 +135,11 @@ TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFu
   L.level = o.level;
   L.cells = 1 << o.level;
   L.blockSide = side / L.cells;
-  L.indexSlots = cubeSlots(series.steps.size());
+  L.indexSlots = o.paperLayout ? side / L.cells : cubeSlots(series.steps.size());
+  if (o.paperLayout && static_cast<std::size_t>(L.indexSlots) * L.indexSlots * L.indexSlots < series.steps.size())
+    throw CapacityError("the paper's " + std::to_string(side) + "^3 index texture holds " +
+                        std::to_string(L.indexSlots * L.indexSlots * L.indexSlots) + " time steps at level " + std::to_string(o.level) + ", got " +
+                        std::to_string(series.steps.size()));
   L.original = series.original;
   if (L.indexSlots * L.cells > o.maxTextureExtent)
     throw CapacityError("the index texture would need " + std::to_string(L.indexSlots * L.cells) + " texels per axis for " +
@@ -193,7 +197,10 @@ TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFu
         }
   }
   out.stats.distinctBlocks = blocks.size();
-  L.blockSlots = cubeSlots(blocks.size());
+  L.blockSlots = o.paperLayout ? L.cells : cubeSlots(blocks.size());
+  if (o.paperLayout && blocks.size() > static_cast<std::size_t>(L.cells) * L.cells * L.cells)
+    throw CapacityError("the paper's " + std::to_string(side) + "^3 refinement texture holds " + std::to_string(L.cells * L.cells * L.cells) +
+                        " blocks at level " + std::to_string(o.level) + ", the data needs " + std::to_string(blocks.size()));
   if (L.blockSlots * r > o.maxTextureExtent)
     throw CapacityError("the refinement texture would need " + std::to_string(L.blockSlots * r) + " texels per axis for " +
                         std::to_string(blocks.size()) + " blocks of " + std::to_string(r) + "^3; the limit is " +
@@ -289,24 +296,38 @@ Rgba8 colourOfIndexTexel(IndexEncoding e, const std::uint32_t* texel) {
   return c;
 }
 
-Rgba8 decodeVoxel(const TimeVaryingTextures& tex, int t, int x, int y, int z) {
+VoxelAddress addressOfVoxel(const TimeVaryingTextures& tex, int t, int x, int y, int z) {
   const TimeVaryingLayout& L = tex.layout;
   if (t < 0 || t >= L.timeSteps || x < 0 || y < 0 || z < 0 || x >= L.side || y >= L.side || z >= L.side)
     throw std::out_of_range("voxel (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) + ") of step " +
                             std::to_string(t) + " is outside the series");
   const int r = L.blockSide;
   const auto slot = indexSlot(L, t);
-  const std::array<int, 3> it{slot[0] * L.cells + x / r, slot[1] * L.cells + y / r, slot[2] * L.cells + z / r};
+  VoxelAddress a;
+  a.indexTexel = {slot[0] * L.cells + x / r, slot[1] * L.cells + y / r, slot[2] * L.cells + z / r};
   const std::uint32_t* texel =
-      &tex.index.texels[4 * (static_cast<std::size_t>(it[0]) +
-                             static_cast<std::size_t>(tex.index.dims[0]) * (it[1] + static_cast<std::size_t>(tex.index.dims[1]) * it[2]))];
-  if (!isRefinementFlag(tex.index.encoding, texel)) return colourOfIndexTexel(tex.index.encoding, texel);
+      &tex.index.texels[4 * (static_cast<std::size_t>(a.indexTexel[0]) +
+                             static_cast<std::size_t>(tex.index.dims[0]) * (a.indexTexel[1] + static_cast<std::size_t>(tex.index.dims[1]) * a.indexTexel[2]))];
+  a.refined = isRefinementFlag(tex.index.encoding, texel);
+  if (!a.refined) return a;
   const auto k = blockOfIndexTexel(L, tex.index.encoding, texel);
-  const std::array<int, 3> v{k[0] * r + x % r, k[1] * r + y % r, k[2] * r + z % r};
-  for (int a = 0; a < 3; ++a)
-    if (k[a] < 0 || v[a] >= tex.refinement.dims[a])
+  a.refinementTexel = {k[0] * r + x % r, k[1] * r + y % r, k[2] * r + z % r};
+  for (int i = 0; i < 3; ++i)
+    if (k[i] < 0 || a.refinementTexel[i] >= tex.refinement.dims[i])
       throw std::out_of_range("index texel of step " + std::to_string(t) + " addresses block slot (" + std::to_string(k[0]) + ", " +
                               std::to_string(k[1]) + ", " + std::to_string(k[2]) + ") outside the refinement texture");
+  return a;
+}
+
+Rgba8 decodeVoxel(const TimeVaryingTextures& tex, int t, int x, int y, int z) {
+  const VoxelAddress a = addressOfVoxel(tex, t, x, y, z);
+  if (!a.refined) {
+    const auto& it = a.indexTexel;
+    return colourOfIndexTexel(tex.index.encoding, &tex.index.texels[4 * (static_cast<std::size_t>(it[0]) +
+                                                                          static_cast<std::size_t>(tex.index.dims[0]) *
+                                                                              (it[1] + static_cast<std::size_t>(tex.index.dims[1]) * it[2]))]);
+  }
+  const auto& v = a.refinementTexel;
   const std::uint8_t* c =
       &tex.refinement.texels[4 * (static_cast<std::size_t>(v[0]) +
                                   static_cast<std::size_t>(tex.refinement.dims[0]) * (v[1] + static_cast<std::size_t>(tex.refinement.dims[1]) * v[2]))];

@@ -67,6 +67,10 @@ struct TimeVaryingOptions {
   AlphaOnePolicy alphaOne = AlphaOnePolicy::Refine;
   int hashBits = 64;                // truncate the block hash (tests force collisions with few bits)
   int maxTextureExtent = 2048;      // GL 4.5's guaranteed GL_MAX_3D_TEXTURE_SIZE
+  // The paper's layout (section 5.2): both textures are side^3, so S = r index slots and B = n
+  // block slots per axis; the appendix shader assumes it. CapacityError when T > r^3 or the blocks
+  // exceed n^3.
+  bool paperLayout = false;
 };
 
 struct TimeVaryingLayout {
@@ -139,6 +143,16 @@ bool isRefinementFlag(IndexEncoding encoding, const std::uint32_t* texel);
 std::array<int, 3> blockOfIndexTexel(const TimeVaryingLayout& layout, IndexEncoding encoding, const std::uint32_t* texel);
 // The RGBA8 colour an index texel stores for a homogeneous cell.
 Rgba8 colourOfIndexTexel(IndexEncoding encoding, const std::uint32_t* texel);
+
+// Where the exact decoder reads voxel (x, y, z) of step t: the index texel, and the refinement
+// texel when the cell is refined. Integer addressing. Throws std::out_of_range for coordinates or
+// an address outside the textures.
+struct VoxelAddress {
+  std::array<int, 3> indexTexel{};
+  bool refined = false;
+  std::array<int, 3> refinementTexel{};
+};
+VoxelAddress addressOfVoxel(const TimeVaryingTextures& textures, int t, int x, int y, int z);
 
 // Exact decoder, integer addressing: the colour of voxel (x, y, z) of step t (coordinates in the
 // padded cube). Throws std::out_of_range for coordinates or an address outside the textures.

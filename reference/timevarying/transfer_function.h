@@ -8,9 +8,9 @@
 #include <string_view>
 #include <vector>
 
-namespace voxref::ref {
+#include "reference/common/rgba.h"
 
-using Rgba8 = std::array<std::uint8_t, 4>;
+namespace voxref::ref {
 
 struct TransferFunction {
   std::string name;
