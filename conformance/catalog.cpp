@@ -3,10 +3,15 @@
 #include <fnmatch.h>
 
 #include "conformance/sparsegrid/sparsegrid_catalog.h"
+#include "conformance/timevarying/timevarying_catalog.h"
 
 namespace voxref::conf {
 
-std::vector<Case> allCases() { return sparseGridCases(); }
+std::vector<Case> allCases() {
+  std::vector<Case> cases = sparseGridCases();
+  for (Case& c : timeVaryingCases()) cases.push_back(std::move(c));
+  return cases;
+}
 
 bool globMatch(const std::string& glob, const std::string& id) { return fnmatch(glob.c_str(), id.c_str(), 0) == 0; }
 

@@ -1,0 +1,264 @@
+#include "conformance/timevarying/timevarying_conf.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "conformance/io/atomic_file.h"
+#include "conformance/report/case_images.h"
+#include "conformance/timevarying/fetch_classification.h"
+#include "emulation/framebuffer_emu.h"
+#include "emulation/timevarying_emu.h"
+#include "reference/timevarying/plume.h"
+#include "gpu/gl_error.h"
+#include "gpu/timevarying_gl.h"
+
+namespace voxref::conf {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// The right colour of every sample of the frame: the input after the transfer function
+// (fetch_classification.h), 0 outside the unit cube.
+ref::RgbaStack exactColours(const ref::TimeSeries& input, const ref::TransferFunction& tf, int step, const ref::PlaneFrame& f) {
+  ref::RgbaStack out{f.width, f.height, f.planes, {}};
+  out.colours.reserve(static_cast<std::size_t>(f.width) * f.height * f.planes);
+  for (int k = 0; k < f.planes; ++k)
+    for (int j = 0; j < f.height; ++j)
+      for (int i = 0; i < f.width; ++i) {
+        const glm::dvec3 p = f.sample(i, j, k);
+        const bool outside = p.x < 0 || p.y < 0 || p.z < 0 || p.x > 1 || p.y > 1 || p.z > 1;
+        out.colours.push_back(outside ? ref::Rgba8{0, 0, 0, 0} : inputColour(input, tf, step, p));
+      }
+  return out;
+}
+
+// The exact colours composited back to front in real arithmetic: C = s a + C (1 - a) per channel
+// (alpha too), the ideal of GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA; values in [0, 255].
+std::vector<std::array<double, 4>> idealComposite(const ref::RgbaStack& exact, const ref::PlaneFrame& f) {
+  std::vector<std::array<double, 4>> out(static_cast<std::size_t>(f.width) * f.height, {0, 0, 0, 0});
+  for (int k = f.planes - 1; k >= 0; --k)
+    for (int j = 0; j < f.height; ++j)
+      for (int i = 0; i < f.width; ++i) {
+        const glm::dvec3 p = f.sample(i, j, k);
+        if (p.x < 0 || p.y < 0 || p.z < 0 || p.x > 1 || p.y > 1 || p.z > 1) continue;
+        const ref::Rgba8& s = exact.at(i, j, k);
+        auto& d = out[static_cast<std::size_t>(i) + static_cast<std::size_t>(f.width) * j];
+        const double a = s[3] / 255.0;
+        for (int c = 0; c < 4; ++c) d[c] = s[c] * a + d[c] * (1.0 - a);
+      }
+  return out;
+}
+
+io::Rgb8Image rgbPreview(const ref::RgbaStack& s, int plane) {
+  io::Rgb8Image img{s.width, s.height, std::vector<std::uint8_t>(static_cast<std::size_t>(s.width) * s.height * 3)};
+  for (int j = 0; j < s.height; ++j)
+    for (int i = 0; i < s.width; ++i) {
+      const ref::Rgba8& c = s.at(i, j, plane);
+      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(s.width) * (s.height - 1 - j))];
+      px[0] = c[0], px[1] = c[1], px[2] = c[2];
+    }
+  return img;
+}
+
+// Error mask: red where GL and emulation differ, magenta where GL differs from the exact decoder.
+io::Rgb8Image maskPreview(const ref::RgbaStack& gl, const ref::RgbaStack& emu, const ref::RgbaStack& exact, int plane) {
+  io::Rgb8Image img = rgbPreview(gl, plane);
+  for (int j = 0; j < gl.height; ++j)
+    for (int i = 0; i < gl.width; ++i) {
+      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(gl.width) * (gl.height - 1 - j))];
+      for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>(px[c] / 3);
+      if (gl.at(i, j, plane) != emu.at(i, j, plane)) px[0] = 255, px[1] = 0, px[2] = 0;
+      else if (gl.at(i, j, plane) != exact.at(i, j, plane)) px[0] = 255, px[1] = 0, px[2] = 255;
+    }
+  return img;
+}
+
+int channelDiff(const ref::Rgba8& a, const ref::Rgba8& b) {
+  int d = 0;
+  for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(int(a[c]) - int(b[c])));
+  return d;
+}
+
+}  // namespace
+
+CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description, const TimeVaryingScene& scene,
+                            const TimeVaryingExpectation& expect) {
+  CaseResult result;
+  result.id = id;
+  result.system = "timevarying";
+  result.description = description;
+  auto t0 = Clock::now();
+  const auto series = ctx.cached<ref::TimeSeries>("timevarying:" + seriesKey(scene),
+                                                  [&] { return std::make_shared<ref::TimeSeries>(makeSeries(scene)); });
+  const ref::TransferFunction tf = ref::transferFunction(scene.transfer);
+  const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(*series, tf, scene.encoding);
+  result.secondsReference += secondsSince(t0);
+  const ref::PlaneFrame frame = makeFrame(scene, tex.layout);
+  const ref::EncodeStats& st = tex.stats;
+  result.figures = {{"scene", toJson(scene)},
+                    {"index_bytes", st.indexBytes},
+                    {"refinement_bytes", st.refinementBytes},
+                    {"ratio_against_4_bytes", st.ratioAgainst4Bytes()},
+                    {"distinct_blocks", st.distinctBlocks},
+                    {"hash_hits", st.hashHits},
+                    {"hash_collisions", st.hashCollisions},
+                    {"alpha_one_cells", st.alphaOneCells},
+                    {"sparseness", ref::sparseness(*series)}};
+  const emu::PrecisionProfile* profile = ctx.profile();
+  if (profile) {
+    for (emu::Effect e : emu::TimeVaryingDecoderEmu(tex, scene.decoder, *profile).effects()) result.effects.emplace_back(emu::effectId(e));
+    result.effects.emplace_back(emu::effectId(emu::Effect::OutputUnorm8));
+    if (scene.composite)
+      for (emu::Effect e : emu::AlphaBlendEmu(*profile).effects()) result.effects.emplace_back(emu::effectId(e));
+  }
+
+  std::size_t compared = 0, mismatched = 0, wrongColours = 0, samples = 0;
+  int maxExactDiff = 0, maxIdealDiff = 0;
+  double idealSumSq = 0.0;
+  FetchCounts fetches;
+  std::string glNotRun;
+  std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;
+  const std::vector<int> steps = stepsOf(scene);
+  for (int step : steps) {
+    std::optional<ref::RgbaStack> gl;
+    if (ctx.gl() && glNotRun.empty()) try {
+        t0 = Clock::now();
+        gl = scene.composite ? gpu::compositeGl(*ctx.gl(), tex, scene.decoder, step, frame) : gpu::decodePlanesGl(*ctx.gl(), tex, scene.decoder, step, frame);
+        result.secondsGl += secondsSince(t0);
+      } catch (const gpu::GlUnsupported& e) {
+        glNotRun = e.what();
+      }
+    else if (!ctx.gl())
+      glNotRun = "no GL context in this run";
+    std::optional<ref::RgbaStack> emulated;
+    if (profile) {
+      t0 = Clock::now();
+      const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(tex, scene.decoder, step, frame, *profile, ctx.threads());
+      emulated = scene.composite ? emu::emulateComposite(tex, scene.decoder, step, frame, *profile, ctx.threads()) : decoded.colours;
+      result.secondsEmulation += secondsSince(t0);
+      fetches.add(classifyFetches(tex, *series, tf, step, frame, decoded));
+    }
+    t0 = Clock::now();
+    const ref::RgbaStack exact = exactColours(*series, tf, step, frame);
+    ref::RgbaStack reference = exact;
+    if (scene.composite) {
+      const auto ideal = idealComposite(exact, frame);
+      reference = {frame.width, frame.height, 1, {}};
+      for (const auto& c : ideal)
+        reference.colours.push_back({static_cast<std::uint8_t>(std::lround(c[0])), static_cast<std::uint8_t>(std::lround(c[1])),
+                                     static_cast<std::uint8_t>(std::lround(c[2])), static_cast<std::uint8_t>(std::lround(c[3]))});
+      if (gl)
+        for (std::size_t i = 0; i < ideal.size(); ++i)
+          for (int c = 0; c < 4; ++c) {
+            const double d = gl->colours[i][c] - ideal[i][c];
+            idealSumSq += d * d;
+            maxIdealDiff = std::max(maxIdealDiff, static_cast<int>(std::ceil(std::fabs(d) - 1e-9)));
+          }
+    }
+    result.secondsReference += secondsSince(t0);
+    const ref::RgbaStack* judged = gl ? &*gl : emulated ? &*emulated : nullptr;
+    if (gl && emulated)
+      for (std::size_t i = 0; i < gl->colours.size(); ++i) {
+        ++compared;
+        if (gl->colours[i] != emulated->colours[i]) {
+          ++mismatched;
+          maxExactDiff = std::max(maxExactDiff, channelDiff(gl->colours[i], emulated->colours[i]));
+        }
+      }
+    if (judged && !scene.composite)
+      for (std::size_t i = 0; i < judged->colours.size(); ++i) {
+        ++samples;
+        if (judged->colours[i] != reference.colours[i]) {
+          ++wrongColours;
+          maxIdealDiff = std::max(maxIdealDiff, channelDiff(judged->colours[i], reference.colours[i]));
+        }
+      }
+    if (scene.composite && judged) samples += judged->colours.size();
+    if (!firstExact) {
+      firstExact = reference;
+      if (gl) firstGl = gl;
+      if (emulated) firstEmu = emulated;
+    }
+  }
+
+  OracleResult exact{"exact", Verdict::NotRun, "", nlohmann::json::object()};
+  if (!glNotRun.empty() || !profile) {
+    exact.summary = !glNotRun.empty() ? "GL not run: " + glNotRun : "no precision profile for this driver";
+  } else {
+    exact.verdict = mismatched ? Verdict::Fail : Verdict::Pass;
+    exact.figures = {{"compared_samples", compared}, {"mismatched_samples", mismatched}, {"mismatched_pixels", mismatched},
+                     {"max_abs_diff_lsb", maxExactDiff}, {"steps", steps.size()}};
+    exact.summary = std::to_string(mismatched) + " of " + std::to_string(compared) + " RGBA samples differ over " +
+                    std::to_string(steps.size()) + " time step(s)";
+  }
+  OracleResult fetch{"fetch", Verdict::NotRun, "", nlohmann::json::object()};
+  if (profile) {
+    fetch.figures = fetches.toJson();
+    const bool clean = fetches.wrong() == 0 && fetches.wrongColour == 0;
+    fetch.verdict = expect.everyFetchRight ? (clean ? Verdict::Pass : Verdict::Fail)
+                    : expect.trapReproduced ? (fetches.wrongColour > 0 ? Verdict::Pass : Verdict::Fail)
+                                            : Verdict::Info;
+    fetch.summary = std::to_string(fetches.wrong()) + " of " + std::to_string(fetches.samples) + " fetches wrong (" +
+                    std::to_string(fetches.wrongBlock) + " wrong block, " + std::to_string(fetches.wrongVoxel) + " wrong voxel; " +
+                    std::to_string(fetches.atCoordinateOne) + " at 1.0, " + std::to_string(fetches.onBlockFace) + " on block faces, " +
+                    std::to_string(fetches.onVoxelFace) + " on voxel faces, " + std::to_string(fetches.inside) + " inside); " +
+                    std::to_string(fetches.wrongColour) + " wrong colours" +
+                    (expect.everyFetchRight ? " (must be 0)" : expect.trapReproduced ? " (the paper's trap must show)" : "");
+  } else {
+    fetch.summary = "no precision profile: the fetches are known only through the emulation";
+  }
+  OracleResult ideal{"ideal", Verdict::Info, "", nlohmann::json::object()};
+  if (scene.composite) {
+    const double rmse = samples ? std::sqrt(idealSumSq / (4.0 * static_cast<double>(samples))) : 0.0;
+    ideal.figures = {{"max_abs_diff_lsb", maxIdealDiff}, {"rmse", rmse}, {"pixels", samples}};
+    ideal.summary = "composited image vs the exact colours composited in real arithmetic: max " + std::to_string(maxIdealDiff) +
+                    " LSB, RMSE " + std::to_string(rmse) + " LSB";
+  } else {
+    ideal.figures = {{"wrong_colours", wrongColours}, {"samples", samples}, {"max_abs_diff_lsb", maxIdealDiff}, {"rmse", nullptr}};
+    ideal.summary = std::to_string(wrongColours) + " of " + std::to_string(samples) + " samples decode another colour than the exact decoder" +
+                    (wrongColours ? " (max channel difference " + std::to_string(maxIdealDiff) + ")" : "");
+  }
+  OracleResult envelope{"envelope", Verdict::NotRun, "no envelope model for the time-varying decoders yet (docs/timevarying.md)", nlohmann::json::object()};
+  result.oracles = {exact, envelope, fetch, ideal};
+  result.status = statusFromOracles(result.oracles);
+  if (!glNotRun.empty() && ctx.gl()) {
+    result.status = Status::Skip;
+    result.message = glNotRun;
+  } else if (result.status != Status::Pass) {
+    for (const OracleResult& o : result.oracles)
+      if (o.verdict == Verdict::Fail) {
+        result.message = o.oracle + ": " + o.summary;
+        break;
+      }
+  }
+  if ((ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn) && firstExact) {
+    const int plane = scene.composite ? 0 : firstExact->planes / 2;
+    io::ensureDirectory(ctx.outDir() / "images");
+    auto write = [&](const ref::RgbaStack& s, const std::string& kind, std::string& slot) {
+      slot = caseImageName(id, kind);
+      io::writePng(ctx.outDir() / slot, rgbPreview(s, plane));
+    };
+    if (firstGl) write(*firstGl, "rendered", result.images.rendered);
+    if (firstEmu) write(*firstEmu, "emulated", result.images.emulated);
+    write(*firstExact, "reference", result.images.reference);
+    if (firstGl && firstEmu) {
+      result.images.errorMask = caseImageName(id, "error_mask");
+      io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(*firstGl, *firstEmu, *firstExact, plane));
+    }
+  }
+  return result;
+}
+
+Case timeVaryingCase(std::string id, std::string description, TimeVaryingScene scene, TimeVaryingExpectation expectation) {
+  Case c;
+  c.id = id;
+  c.system = "timevarying";
+  c.description = description;
+  c.run = [id, description, scene, expectation](CaseContext& ctx) { return judgeTimeVarying(ctx, id, description, scene, expectation); };
+  c.scene = toJson(scene);
+  return c;
+}
+
+}  // namespace voxref::conf
