@@ -128,6 +128,7 @@ void AlphaBlendEmu::blend(Pixel& px, const std::array<float, 4>& src) const {
     const float sa = s * a;
     const float dOma = px.value[c] * oneMinusA;
     px.value[c] = clampUnit(sa + dOma);
+    if (flush_) px.value[c] = unormToFloat(floatToUnormHalfEven(px.value[c], 8), 8);
   }
 }
 
@@ -140,6 +141,7 @@ std::array<std::uint8_t, 4> AlphaBlendEmu::resolve(const Pixel& px) const {
 
 std::vector<Effect> AlphaBlendEmu::effects() const {
   if (profile_->framebuffer == FramebufferModel::QuantizePerPass) return {Effect::OutputUnorm8, Effect::BlendAlphaMulnorm};
+  if (flush_) return {Effect::FloatTileCache, Effect::BlendAlphaFloat, Effect::OutputUnorm8, Effect::FlushEachPass};
   return {Effect::FloatTileCache, Effect::BlendAlphaFloat, Effect::OutputUnorm8};
 }
 

@@ -68,7 +68,8 @@ class AlphaBlendEmu {
     std::array<std::uint8_t, 4> code{};  // llvmpipe
     std::array<float, 4> value{};        // softpipe tile
   };
-  explicit AlphaBlendEmu(const PrecisionProfile& profile) : profile_(&profile) {}
+  // flushEachPass: glFinish after every slice; a float tile is stored and reloaded (unorm8) each time.
+  explicit AlphaBlendEmu(const PrecisionProfile& profile, bool flushEachPass = false) : profile_(&profile), flush_(flushEachPass) {}
   Pixel cleared() const { return {}; }  // glClearColor(0, 0, 0, 0)
   void blend(Pixel& pixel, const std::array<float, 4>& src) const;
   std::array<std::uint8_t, 4> resolve(const Pixel& pixel) const;
@@ -76,6 +77,7 @@ class AlphaBlendEmu {
 
  private:
   const PrecisionProfile* profile_;
+  bool flush_;
 };
 
 // mulnorm(x, y) of llvmpipe: (t + (t >> 8) + 128) >> 8 with t = x y. One below round(x y / 255)

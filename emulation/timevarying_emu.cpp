@@ -207,9 +207,9 @@ EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref
 }
 
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads) {
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool flushEachPass) {
   const TimeVaryingDecoderEmu decoder(textures, variant, profile);
-  const AlphaBlendEmu blend(profile);
+  const AlphaBlendEmu blend(profile, flushEachPass);
   ref::RgbaStack out{frame.width, frame.height, 1, std::vector<ref::Rgba8>(static_cast<std::size_t>(frame.width) * frame.height)};
   const glm::vec3 dx(frame.dx), dy(frame.dy);
   // Rows are independent: each pixel blends its own slices, back (k = planes - 1) to front.

@@ -58,6 +58,6 @@ EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref
 
 // The planes composited back to front, as gpu::compositeGl: one image.
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0);
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0, bool flushEachPass = false);
 
 }  // namespace voxref::emu

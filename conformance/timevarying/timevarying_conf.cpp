@@ -118,6 +118,9 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   int maxExactDiff = 0, maxIdealDiff = 0;
   double idealSumSq = 0.0;
   FetchCounts fetches;
+  std::vector<std::size_t> departureChanges;
+  const std::vector<emu::Departure> departures = profile && scene.composite ? emu::departuresFromGlSemantics(*profile) : std::vector<emu::Departure>{};
+  departureChanges.assign(departures.size(), 0);
   std::string glNotRun;
   std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;
   const std::vector<int> steps = stepsOf(scene);
@@ -158,6 +161,12 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
           }
     }
     result.secondsReference += secondsSince(t0);
+    if (gl)
+      for (std::size_t d = 0; d < departures.size(); ++d) {
+        const ref::RgbaStack semantics =
+            emu::emulateComposite(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads(), departures[d].flushEachPass);
+        for (std::size_t i = 0; i < gl->colours.size(); ++i) departureChanges[d] += gl->colours[i] != semantics.colours[i];
+      }
     const ref::RgbaStack* judged = gl ? &*gl : emulated ? &*emulated : nullptr;
     if (gl && emulated)
       for (std::size_t i = 0; i < gl->colours.size(); ++i) {
@@ -183,6 +192,9 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
     }
   }
 
+  for (std::size_t d = 0; d < departures.size(); ++d)
+    result.findings.push_back({std::string(departures[d].id), std::string(departures[d].description),
+                               {{"samples_changed", departureChanges[d]}, {"pixels_compared", samples}}});
   OracleResult exact{"exact", Verdict::NotRun, "", nlohmann::json::object()};
   if (!glNotRun.empty() || !profile) {
     exact.summary = !glNotRun.empty() ? "GL not run: " + glNotRun : "no precision profile for this driver";
