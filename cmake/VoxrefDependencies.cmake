@@ -13,5 +13,6 @@ find_package(embree 3 REQUIRED)                 # libembree-dev (fixtures, issue
 find_package(CLI11 REQUIRED)                    # libcli11-dev
 find_package(nlohmann_json 3 REQUIRED)          # nlohmann-json3-dev
 find_package(ZLIB REQUIRED)                     # zlib1g-dev (gzip-compressed raw volumes)
+pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)  # libzstd-dev: the general-purpose baseline of the benchmarks
 find_package(Threads REQUIRED)
 find_package(GTest REQUIRED)                    # libgtest-dev

@@ -81,7 +81,7 @@ class AlphaBlendEmu {
 };
 
 // mulnorm(x, y) of llvmpipe: (t + (t >> 8) + 128) >> 8 with t = x y. One below round(x y / 255)
-// for 12 of the 65536 products (for example 152 * 229).
+// for 12 products (24 of the 65536 ordered pairs), for example 152 * 229.
 std::uint8_t mulnorm8(std::uint8_t x, std::uint8_t y);
 
 }  // namespace voxref::emu

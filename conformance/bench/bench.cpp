@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "conformance/bench/sparsegrid_bench.h"
+#include "conformance/bench/timevarying_bench.h"
 #include "conformance/catalog.h"
 #include "conformance/driver_info.h"
 #include "conformance/io/atomic_file.h"
@@ -44,16 +45,22 @@ std::string formatSeconds(const Timing& t) {
 }
 
 int runBenchmarks(const BenchOptions& options, std::ostream& out) {
-  const std::vector<std::string> ids = sparseGridBenchIds();
+  std::vector<std::string> ids = sparseGridBenchIds();
+  for (const auto& id : timeVaryingBenchIds()) ids.push_back(id);
   bool any = false;
   for (const auto& id : ids) any |= globMatch(options.filter, id);
-  if (!any) throw UsageError("no benchmark matches '" + options.filter + "' (known: sparsegrid.table1_time, sparsegrid.table2_memory, sparsegrid.accuracy)");
+  if (!any) {
+    std::string known;
+    for (const auto& id : ids) known += (known.empty() ? "" : ", ") + id;
+    throw UsageError("no benchmark matches '" + options.filter + "' (known: " + known + ")");
+  }
   io::ensureDirectory(options.out);
   std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
   std::string how;
   const emu::PrecisionProfile* profile = chooseProfile("auto", gl->info(), how);
 
-  const std::vector<BenchTable> tables = sparseGridBench(options, *gl, profile);
+  std::vector<BenchTable> tables = sparseGridBench(options, *gl, profile);
+  for (BenchTable& t : timeVaryingBench(options, *gl, profile)) tables.push_back(std::move(t));
   std::string md = "# voxref bench\n\nDriver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
                    (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
                    (options.quick ? ". Quick mode (smoke run: small sizes)." : ".") + "\n\n";

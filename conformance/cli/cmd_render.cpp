@@ -9,6 +9,10 @@
 #include "conformance/progress.h"
 #include "conformance/runner.h"
 #include "conformance/sparsegrid/prepared_scene.h"
+#include "conformance/timevarying/fetch_classification.h"
+#include "conformance/timevarying/timevarying_scene.h"
+#include "emulation/timevarying_emu.h"
+#include "gpu/timevarying_gl.h"
 #include "emulation/combination_emu.h"
 #include "gpu/combination_gl.h"
 #include "reference/common/framebuffer_codes.h"
@@ -35,13 +39,74 @@ nlohmann::json loadScene(const std::string& spec) {
   throw conf::UsageError("'" + spec + "' is neither a scene file nor a case id (voxref list shows the cases)");
 }
 
+// A time-varying scene: the composite of its first time step (back-to-front slices), RGBA.
+int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scene) {
+  const ref::TimeSeries series = conf::makeSeries(scene);
+  const ref::TransferFunction tf = ref::transferFunction(scene.transfer);
+  const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, tf, scene.encoding);
+  const ref::PlaneFrame frame = conf::makeFrame(scene, tex.layout);
+  const int step = conf::stepsOf(scene).front();
+  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()}, {"voxref.backend", o.backend},
+                                                {"voxref.step", std::to_string(step)}};
+  std::vector<std::array<double, 4>> rgba(static_cast<std::size_t>(frame.width) * frame.height, {0, 0, 0, 0});
+  if (o.backend == "reference") {
+    // The input's colours (floor(p * side)) composited back to front in real arithmetic.
+    for (int k = frame.planes - 1; k >= 0; --k)
+      for (int j = 0; j < frame.height; ++j)
+        for (int i = 0; i < frame.width; ++i) {
+          const glm::dvec3 p = frame.sample(i, j, k);
+          if (p.x < 0 || p.y < 0 || p.z < 0 || p.x > 1 || p.y > 1 || p.z > 1) continue;
+          const ref::Rgba8 c = conf::inputColour(series, tf, step, p);
+          auto& d = rgba[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j];
+          for (int ch = 0; ch < 4; ++ch) d[ch] = c[ch] / 255.0 * (c[3] / 255.0) + d[ch] * (1.0 - c[3] / 255.0);
+        }
+  } else {
+    ref::RgbaStack image;
+    if (o.backend == "emulation") {
+      const emu::PrecisionProfile* profile = emu::findProfile(o.profile);
+      if (!profile) throw conf::UsageError("unknown profile '" + o.profile + "'");
+      image = emu::emulateComposite(tex, scene.decoder, step, frame, *profile, o.threads);
+      attributes["voxref.profile"] = std::string(profile->name);
+    } else if (o.backend == "gl") {
+      const auto driver = gpu::parseDriver(o.driver);
+      if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "'");
+      const auto context = gpu::createContext(*driver);
+      image = gpu::compositeGl(*context, tex, scene.decoder, step, frame);
+      attributes["voxref.renderer"] = context->info().renderer + " " + context->info().version;
+    } else {
+      throw conf::UsageError("unknown backend '" + o.backend + "' (reference, emulation or gl)");
+    }
+    for (std::size_t i = 0; i < rgba.size(); ++i)
+      for (int ch = 0; ch < 4; ++ch) rgba[i][ch] = image.colours[i][ch] / 255.0;
+  }
+  std::vector<io::ExrChannel> channels{{"R", {}}, {"G", {}}, {"B", {}}, {"A", {}}};
+  for (int ch = 0; ch < 4; ++ch) {
+    channels[ch].data.resize(rgba.size());
+    for (int j = 0; j < frame.height; ++j)
+      for (int i = 0; i < frame.width; ++i)
+        channels[ch].data[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * (frame.height - 1 - j)] =
+            static_cast<float>(rgba[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j][ch]);
+  }
+  io::writeExr(o.out, frame.width, frame.height, channels, attributes);
+  std::cout << "wrote " << o.out.string() << " (" << frame.width << "x" << frame.height << ", " << o.backend << ")\n";
+  return 0;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& o) {
   if (o.out.extension() != ".exr") throw conf::UsageError("--out must name an .exr file, got " + o.out.string());
+  const nlohmann::json json = loadScene(o.scene);
+  if (json.is_object() && json.value("system", "sparsegrid") == "timevarying") {
+    try {
+      return renderTimeVarying(o, conf::parseTimeVaryingScene(json));
+    } catch (const conf::JsonFieldError& e) {
+      throw conf::UsageError("scene " + o.scene + ": " + e.what());
+    }
+  }
   conf::SparseGridScene scene;
   try {
-    scene = conf::parseSparseGridScene(loadScene(o.scene));
+    scene = conf::parseSparseGridScene(json);
   } catch (const conf::SceneError& e) {
     throw conf::UsageError("scene " + o.scene + ": " + e.what());
   }
