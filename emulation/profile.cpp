@@ -1,5 +1,6 @@
 #include "emulation/profile.h"
 
+#include <algorithm>
 #include <array>
 
 namespace voxref::emu {
@@ -71,7 +72,7 @@ std::vector<Departure> departuresFromGlSemantics(const PrecisionProfile& profile
     out.push_back({"softpipe.framebuffer.no_per_pass_requantization",
                    "colour kept in a float32 tile cache between blend passes; quantized to the buffer's format "
                    "only when the tile is flushed (read-back), not after every pass",
-                   profile, true});
+                   profile, true, Effect::FloatTileCache});
   }
   if (profile.textureTileCache.aliasing) {
     PrecisionProfile fixed = profile;
@@ -79,8 +80,15 @@ std::vector<Departure> departuresFromGlSemantics(const PrecisionProfile& profile
     out.push_back({"softpipe.texture.tile_cache_aliasing",
                    "3D LINEAR lookups whose eight taps span texture tiles that share a slot of the 16-entry tile "
                    "cache read texels of the wrong tile (texel pointers taken before the cache entry is reused)",
-                   fixed, false});
+                   fixed, false, Effect::TileCacheAliasing});
   }
+  return out;
+}
+
+std::vector<Departure> departuresAmong(const PrecisionProfile& profile, std::span<const Effect> simulated) {
+  std::vector<Departure> out;
+  for (Departure& d : departuresFromGlSemantics(profile))
+    if (std::find(simulated.begin(), simulated.end(), d.effect) != simulated.end()) out.push_back(std::move(d));
   return out;
 }
 

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "emulation/effects.h"
+
 namespace voxref::emu {
 
 // Coordinate, wrap and filter formulas of a sampler implementation.
@@ -86,8 +88,12 @@ struct Departure {
   std::string_view description;
   PrecisionProfile semantics;    // the profile without this behaviour
   bool flushEachPass = false;    // the semantics are obtained with a flush after every pass
+  Effect effect;                 // the simulated effect that is this behaviour
 };
 std::vector<Departure> departuresFromGlSemantics(const PrecisionProfile& profile);
+// The departures a scene meets: those whose effect is among the effects its emulation simulates
+// (a NEAREST-only scene never meets the LINEAR tile-cache aliasing, so it is not reported).
+std::vector<Departure> departuresAmong(const PrecisionProfile& profile, std::span<const Effect> simulated);
 
 // The profile `auto` picks for a renderer string, the environment and the CPU's FMA support:
 // llvmpipe[-noaos][-nofma] or softpipe. nullptr for an unknown renderer (a driver voxref has no

@@ -53,7 +53,7 @@ void judgeEnvelope(CombinationPlanes& r, const ref::CombinationTextures& texture
 void findDepartures(CombinationPlanes& r, const ref::CombinationTextures& textures, const emu::PrecisionProfile& profile,
                     int threads) {
   std::vector<std::uint8_t> explained(r.envelope.size(), 0);
-  for (const emu::Departure& d : emu::departuresFromGlSemantics(profile)) {
+  for (const emu::Departure& d : emu::departuresAmong(profile, r.simulated)) {
     const emu::EmulatedPlanes semantics = emu::emulateCombination(
         textures, r.frame, r.scene.sampler, r.scene.framebuffer, d.semantics, {d.flushEachPass || r.scene.flushEachPass, threads});
     const CodeComparison c = compareCodes(*r.gl, semantics.planes, &semantics.unmodelled);
@@ -104,9 +104,8 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
   } else {
     try {
       const emu::CombinationEmuOptions options{scene.flushEachPass, threads};
-      for (emu::Effect e : emu::combinationEffects(textures, scene.sampler, scene.framebuffer, *profile, options, r->frame.width,
-                                                   r->frame.height))
-        r->effects.emplace_back(emu::effectId(e));
+      r->simulated = emu::combinationEffects(textures, scene.sampler, scene.framebuffer, *profile, options, r->frame.width, r->frame.height);
+      for (emu::Effect e : r->simulated) r->effects.emplace_back(emu::effectId(e));
       t0 = Clock::now();
       r->emulated = emu::emulateCombination(textures, r->frame, scene.sampler, scene.framebuffer, *profile, options);
       r->secondsEmulation = secondsSince(t0);

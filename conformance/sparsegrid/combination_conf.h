@@ -38,7 +38,8 @@ struct CombinationPlanes {
   std::string glNotRun;  // why gl is empty
   std::optional<emu::EmulatedPlanes> emulated;
   std::string emulationNotRun;
-  std::vector<std::string> effects;
+  std::vector<emu::Effect> simulated;  // what the emulation simulates for this scene
+  std::vector<std::string> effects;    // their ids, for the report
   // Envelope verdict per sample of the judged read-back (GL, else the emulation): 0 pass,
   // 1 quality warning, 2 fail.
   std::string envelopeJudged;

@@ -107,11 +107,13 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
                     {"alpha_one_cells", st.alphaOneCells},
                     {"sparseness", ref::sparseness(*series)}};
   const emu::PrecisionProfile* profile = ctx.profile();
+  std::vector<emu::Effect> simulated;
   if (profile) {
-    for (emu::Effect e : emu::TimeVaryingDecoderEmu(tex, scene.decoder, *profile).effects()) result.effects.emplace_back(emu::effectId(e));
-    result.effects.emplace_back(emu::effectId(emu::Effect::OutputUnorm8));
+    simulated = emu::TimeVaryingDecoderEmu(tex, scene.decoder, *profile).effects();
+    simulated.push_back(emu::Effect::OutputUnorm8);
     if (scene.composite)
-      for (emu::Effect e : emu::AlphaBlendEmu(*profile).effects()) result.effects.emplace_back(emu::effectId(e));
+      for (emu::Effect e : emu::AlphaBlendEmu(*profile).effects()) simulated.push_back(e);
+    for (emu::Effect e : simulated) result.effects.emplace_back(emu::effectId(e));
   }
 
   std::size_t compared = 0, mismatched = 0, wrongColours = 0, samples = 0;
@@ -119,7 +121,7 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   double idealSumSq = 0.0;
   FetchCounts fetches;
   std::vector<std::size_t> departureChanges;
-  const std::vector<emu::Departure> departures = profile && scene.composite ? emu::departuresFromGlSemantics(*profile) : std::vector<emu::Departure>{};
+  const std::vector<emu::Departure> departures = profile ? emu::departuresAmong(*profile, simulated) : std::vector<emu::Departure>{};
   departureChanges.assign(departures.size(), 0);
   std::string glNotRun;
   std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;
@@ -164,7 +166,9 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
     if (gl)
       for (std::size_t d = 0; d < departures.size(); ++d) {
         const ref::RgbaStack semantics =
-            emu::emulateComposite(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads(), departures[d].flushEachPass);
+            scene.composite
+                ? emu::emulateComposite(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads(), departures[d].flushEachPass)
+                : emu::emulateDecodePlanes(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads()).colours;
         for (std::size_t i = 0; i < gl->colours.size(); ++i) departureChanges[d] += gl->colours[i] != semantics.colours[i];
       }
     const ref::RgbaStack* judged = gl ? &*gl : emulated ? &*emulated : nullptr;

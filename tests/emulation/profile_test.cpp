@@ -38,5 +38,17 @@ TEST(Departures, SoftpipeNamesItsTwoAndLlvmpipeNone) {
   EXPECT_FALSE(d[1].semantics.textureTileCache.aliasing);
 }
 
+TEST(Departures, OnlyThoseAScenesEffectsMeet) {
+  const PrecisionProfile& sp = *findProfile("softpipe");
+  const Effect nearestAlphaBlend[] = {Effect::SamplerNearest, Effect::FloatTileCache, Effect::BlendAlphaFloat};
+  const auto d = departuresAmong(sp, nearestAlphaBlend);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0].id, "softpipe.framebuffer.no_per_pass_requantization");
+  const Effect linearOnly[] = {Effect::SamplerFloatWeights, Effect::TileCacheAliasing};
+  ASSERT_EQ(departuresAmong(sp, linearOnly).size(), 1u);
+  EXPECT_EQ(departuresAmong(sp, linearOnly)[0].id, "softpipe.texture.tile_cache_aliasing");
+  EXPECT_TRUE(departuresAmong(sp, std::span<const Effect>{}).empty());
+}
+
 }  // namespace
 }  // namespace voxref::emu
