@@ -55,6 +55,8 @@ struct EncodeOptions {
   std::string level = "auto";
   std::string encoding = "normalized_rgba8";
   std::string alphaOne = "refine";
+  int pageBits = 12;         // leb: 2^pageBits points per page
+  bool noGradients = false;  // leb: data channel only
   std::filesystem::path out;
 };
 int runEncode(const EncodeOptions& o);
@@ -62,7 +64,8 @@ int runEncode(const EncodeOptions& o);
 struct DecodeOptions {
   std::string codec;
   std::filesystem::path input, out;
-  int step = -1;  // -1: every step
+  int step = -1;  // timevarying; -1: every step
+  std::filesystem::path gradientsOut;  // leb
 };
 int runDecode(const DecodeOptions& o);
 

@@ -53,10 +53,10 @@ int main(int argc, char** argv) {
 
   EncodeOptions encode;
   auto* encodeCmd = app.add_subcommand("encode", "encode volumes with a codec into a file");
-  encodeCmd->add_option("--codec", encode.codec, "timevarying")->required();
-  encodeCmd->add_option("--input", encode.inputs, "raw volume files, one per time step (.raw or .raw.gz)");
+  encodeCmd->add_option("--codec", encode.codec, "timevarying or leb")->required();
+  encodeCmd->add_option("--input", encode.inputs, "raw volume files (.raw or .raw.gz): timevarying one per time step, leb one");
   encodeCmd->add_option("--dims", encode.dims, "X Y Z extents of every input volume")->expected(3);
-  encodeCmd->add_option("--type", encode.type, "voxel type of the inputs")->default_val("uint8");
+  encodeCmd->add_option("--type", encode.type, "voxel type of the inputs: uint8, or uint16 (leb; little endian)")->default_val("uint8");
   encodeCmd->add_flag("--plume", encode.plume, "encode the synthetic discharge plume instead of files");
   encodeCmd->add_option("--sparseness", encode.sparseness, "plume: fraction of zero voxels to aim for (e.g. 0.9965)");
   encodeCmd->add_option("--side", encode.plumeSide, "plume: volume side (power of two)")->default_val(128);
@@ -66,18 +66,22 @@ int main(int argc, char** argv) {
   encodeCmd->add_option("--encoding", encode.encoding, "index encoding: normalized_rgba8 (paper), normalized_rgba16, normalized_float, block_rgba8")
       ->default_val("normalized_rgba8");
   encodeCmd->add_option("--alpha-one", encode.alphaOne, "homogeneous colours with alpha 255: refine (lossless) or paper")->default_val("refine");
-  encodeCmd->add_option("--out", encode.out, "output file (.vxtv)")->required();
+  encodeCmd->add_option("--page-bits", encode.pageBits, "leb: pages of 2^N points (4..20)")->default_val(12);
+  encodeCmd->add_flag("--no-gradients", encode.noGradients, "leb: code the data only, no gradients channel");
+  encodeCmd->add_option("--out", encode.out, "output file (.vxtv, .vxleb)")->required();
 
   DecodeOptions decode;
   auto* decodeCmd = app.add_subcommand("decode", "decode a codec file into raw volumes");
-  decodeCmd->add_option("--codec", decode.codec, "timevarying")->required();
+  decodeCmd->add_option("--codec", decode.codec, "timevarying or leb")->required();
   decodeCmd->add_option("--input", decode.input, "file to decode")->required();
-  decodeCmd->add_option("--out", decode.out, "output directory (step_NNN.rgba: RGBA8 voxels, x fastest)")->required();
-  decodeCmd->add_option("--step", decode.step, "only this time step")->default_val(-1);
+  decodeCmd->add_option("--out", decode.out,
+                        "timevarying: output directory (step_NNN.rgba: RGBA8 voxels, x fastest); leb: the raw volume file")->required();
+  decodeCmd->add_option("--step", decode.step, "timevarying: only this time step")->default_val(-1);
+  decodeCmd->add_option("--gradients-out", decode.gradientsOut, "leb: also write the gradients (3 int8 per sample, x fastest)");
 
   InfoOptions info;
   auto* infoCmd = app.add_subcommand("info", "describe a codec file: layout, padding, statistics");
-  infoCmd->add_option("--codec", info.codec, "timevarying")->required();
+  infoCmd->add_option("--codec", info.codec, "timevarying or leb")->required();
   infoCmd->add_option("--input", info.input, "file to describe")->required();
 
   try {

@@ -15,6 +15,13 @@ class IoError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A file whose content is not what its format allows; the message names the file, the byte
+// offset and what was expected.
+class FormatError : public IoError {
+ public:
+  using IoError::IoError;
+};
+
 // A temporary path beside `destination` ("<name>.tmp<pid>.<ext>", keeping the extension so that
 // format libraries recognise it). commit() renames it onto the destination; the destructor
 // removes it if commit() was not reached.

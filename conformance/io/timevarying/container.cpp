@@ -1,6 +1,7 @@
 #include "conformance/io/timevarying/container.h"
 
-#include <zlib.h>
+#include "reference/common/byte_stream.h"
+#include "reference/common/crc32.h"
 
 #include <bit>
 #include <cmath>
@@ -18,63 +19,6 @@ std::size_t channelBytes(ref::IndexEncoding e) {
   return e == ref::IndexEncoding::NormalizedRgba16 ? 2 : e == ref::IndexEncoding::NormalizedFloat ? 4 : 1;
 }
 
-std::uint32_t crc(std::string_view bytes) {
-  uLong c = crc32(0L, Z_NULL, 0);
-  std::size_t done = 0;
-  while (done < bytes.size()) {
-    const uInt n = static_cast<uInt>(std::min<std::size_t>(bytes.size() - done, 1u << 30));
-    c = crc32(c, reinterpret_cast<const Bytef*>(bytes.data() + done), n);
-    done += n;
-  }
-  return static_cast<std::uint32_t>(c);
-}
-
-class Writer {
- public:
-  void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
-  template <class T>
-  void le(T v) {
-    for (std::size_t i = 0; i < sizeof(T); ++i) out_.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * i)) & 0xff));
-  }
-  std::string& str() { return out_; }
-
- private:
-  std::string out_;
-};
-
-// Reads fields in order; every read checks the remaining length and names the field on failure.
-class Reader {
- public:
-  Reader(std::string_view b, std::string name) : b_(b), name_(std::move(name)) {}
-  [[noreturn]] void fail(std::size_t at, const std::string& what) const {
-    throw FormatError(name_ + ": offset " + std::to_string(at) + ": " + what);
-  }
-  std::size_t offset() const { return at_; }
-  template <class T>
-  T le(const char* field) {
-    need(sizeof(T), field);
-    std::uint64_t v = 0;
-    for (std::size_t i = 0; i < sizeof(T); ++i) v |= static_cast<std::uint64_t>(static_cast<unsigned char>(b_[at_ + i])) << (8 * i);
-    at_ += sizeof(T);
-    return static_cast<T>(v);
-  }
-  std::string_view take(std::size_t n, const char* field) {
-    need(n, field);
-    const std::string_view v = b_.substr(at_, n);
-    at_ += n;
-    return v;
-  }
-  void need(std::size_t n, const char* field) const {
-    if (b_.size() - at_ < n)
-      fail(at_, std::string(field) + ": expected " + std::to_string(n) + " bytes, the file ends after " + std::to_string(b_.size() - at_));
-  }
-
- private:
-  std::string_view b_;
-  std::string name_;
-  std::size_t at_ = 0;
-};
-
 bool isPow2(std::uint64_t v) { return v && (v & (v - 1)) == 0; }
 
 }  // namespace
@@ -82,7 +26,7 @@ bool isPow2(std::uint64_t v) { return v && (v & (v - 1)) == 0; }
 std::string serializeTimeVarying(const TimeVaryingFile& f) {
   const ref::TimeVaryingTextures& t = f.textures;
   const ref::TimeVaryingLayout& L = t.layout;
-  Writer w;
+  ref::ByteWriter w;
   w.bytes("VXTV", 4);
   w.le<std::uint16_t>(1);
   w.le<std::uint16_t>(0);
@@ -101,13 +45,15 @@ std::string serializeTimeVarying(const TimeVaryingFile& f) {
   for (std::uint32_t v : t.index.texels)
     for (std::size_t i = 0; i < cb; ++i) w.le<std::uint8_t>(static_cast<std::uint8_t>(v >> (8 * i)));
   w.bytes(t.refinement.texels.data(), t.refinement.texels.size());
-  const std::uint32_t c = crc(w.str());
+  const std::uint32_t c = ref::crc32(w.str());
   w.le<std::uint32_t>(c);
   return std::move(w.str());
 }
 
-TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
-  Reader r(b, name);
+namespace {
+
+TimeVaryingFile parse(std::string_view b) {
+  ref::ByteReader r(b);
   // Section 1: header.
   if (r.take(4, "magic") != std::string_view("VXTV", 4)) r.fail(0, "magic: expected 'VXTV' (not a .vxtv file)");
   if (const auto v = r.le<std::uint16_t>("version"); v != 1) r.fail(4, "version: expected 1, got " + std::to_string(v));
@@ -179,11 +125,8 @@ TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
   if (expectedTotal != b.size())
     r.fail(r.offset(), "the header describes " + std::to_string(expectedTotal) + " bytes in all, the file has " + std::to_string(b.size()) +
                            (b.size() < expectedTotal ? " (truncated)" : " (trailing bytes)"));
-  const std::uint32_t stored = static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 4])) |
-                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 3])) << 8 |
-                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 2])) << 16 |
-                               static_cast<std::uint32_t>(static_cast<unsigned char>(b[b.size() - 1])) << 24;
-  if (crc(b.substr(0, b.size() - 4)) != stored) r.fail(b.size() - 4, "trailer: CRC-32 mismatch (the file is corrupt)");
+  const auto stored = static_cast<std::uint32_t>(ref::loadLe(b.data() + b.size() - 4, 4));
+  if (ref::crc32(b.substr(0, b.size() - 4)) != stored) r.fail(b.size() - 4, "trailer: CRC-32 mismatch (the file is corrupt)");
 
   ref::IndexTexture& index = f.textures.index;
   index.dims = {static_cast<int>(indexSide), static_cast<int>(indexSide), static_cast<int>(indexSide)};
@@ -221,6 +164,16 @@ TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
   st.refinementBytesAllocated = static_cast<std::size_t>(refBytes);
   st.inputVoxels = static_cast<std::size_t>(L.timeSteps) * ref::sampleCount(L.original);
   return f;
+}
+
+}  // namespace
+
+TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
+  try {
+    return parse(b);
+  } catch (const ref::StreamError& e) {
+    throw FormatError(name + ": " + e.what());
+  }
 }
 
 void writeTimeVarying(const std::filesystem::path& path, const TimeVaryingFile& file) { writeFileAtomically(path, serializeTimeVarying(file)); }

@@ -14,11 +14,6 @@
 
 namespace voxref::io {
 
-class FormatError : public IoError {
- public:
-  using IoError::IoError;
-};
-
 struct TimeVaryingFile {
   ref::TimeVaryingTextures textures;
   ref::TransferFunction transfer;

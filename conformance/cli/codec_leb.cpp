@@ -1,0 +1,119 @@
+// voxref encode | decode | info --codec leb: lossless LEB compression (Gregorski et al. 2004) of
+// the user's raw volumes.
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+
+#include "conformance/cli/codecs.h"
+#include "conformance/io/leb_file.h"
+#include "conformance/io/raw_volume.h"
+#include "conformance/runner.h"
+#include "reference/common/byte_stream.h"
+#include "reference/leb/leb_codec.h"
+
+namespace voxref::cli {
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+std::string ratioText(double r) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%.3f:1", r);
+  return b;
+}
+
+void printInfo(const ref::LebStream& s, std::ostream& out) {
+  const ref::LebStats st = ref::lebStats(s);
+  const int n = s.grid.pointsPerAxis();
+  out << "codec           leb (Gregorski, Senecal, Duchaineau, Joy 2004)\n"
+      << "volume          " << dimsText(s.dims) << " uint" << s.sampleBits << "\n"
+      << "grid            " << n << "^3 (k = " << s.grid.k << ", " << s.grid.levelCount() << " levels)";
+  if (st.gridPoints != st.volumePoints)
+    out << "; padding " << (st.gridPoints - st.volumePoints) << " points beyond " << dimsText(s.dims)
+        << ", not coded (they take their prediction) and excluded from the ratios";
+  out << "\npages           " << st.pages << " of " << (1u << s.pageBits) << " points\n";
+  for (const ref::LebChannelStats& c : st.channels) {
+    const bool data = c.kind == ref::LebChannelKind::Data;
+    out << (data ? "data            " : "gradients       ") << c.rawBytes << " bytes raw -> " << c.compressedBytes() << " ("
+        << c.payloadBytes << " coded, " << c.descriptorBytes << " tables)" << (data ? " + " + std::to_string(st.headerBytes) + " header" : "")
+        << ", ratio " << ratioText(st.channelRatio(c.kind)) << "\n";
+  }
+  out << "stream          " << st.streamBytes << " bytes, ratio " << ratioText(st.ratio()) << " (raw bytes of the volume"
+      << (st.channels.size() > 1 ? " and its gradients" : "") << " over the stream)\n";
+}
+
+}  // namespace
+
+int encodeLebCommand(const EncodeOptions& o) {
+  if (o.out.extension() != ".vxleb") throw conf::UsageError("--out must name a .vxleb file, got " + o.out.string());
+  if (o.plume) throw conf::UsageError("--plume is for the timevarying codec; the leb codec encodes --input FILE --dims X Y Z");
+  if (o.inputs.size() != 1) throw conf::UsageError("the leb codec encodes one volume: give --input FILE once (got " + std::to_string(o.inputs.size()) + ")");
+  if (o.dims.size() != 3) throw conf::UsageError("--dims needs three extents X Y Z");
+  const auto type = io::parseVoxelType(o.type);
+  if (!type) throw conf::UsageError("--type must be uint8 or uint16, got " + o.type);
+  const ref::Dims3 dims{o.dims[0], o.dims[1], o.dims[2]};
+  ref::Volume<std::uint16_t> volume;
+  int bits = 8;
+  if (*type == io::VoxelType::UInt8) {
+    const ref::Volume<std::uint8_t> v8 = io::readRawVolumeU8(o.inputs[0], dims);
+    volume = ref::Volume<std::uint16_t>(dims, std::vector<std::uint16_t>(v8.data().begin(), v8.data().end()));
+  } else {
+    volume = io::readRawVolumeU16(o.inputs[0], dims);
+    bits = 16;
+  }
+  ref::LebEncodeOptions options;
+  options.pageBits = o.pageBits;
+  options.gradients = !o.noGradients;
+  std::string stream;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    stream = ref::encodeLeb(volume, bits, options);
+  } catch (const std::invalid_argument& e) {
+    throw conf::UsageError(e.what());
+  }
+  const double seconds = secondsSince(t0);
+  io::writeLebFile(o.out, stream);
+  std::cout << "wrote " << o.out.string() << " in " << seconds << " s\n";
+  printInfo(ref::parseLebStream(std::move(stream)), std::cout);
+  return 0;
+}
+
+int decodeLebCommand(const DecodeOptions& o) {
+  if (o.step >= 0) throw conf::UsageError("--step is for the timevarying codec");
+  const ref::LebStream s = io::readLebFile(o.input);
+  ref::LebDecoded d;
+  try {
+    d = ref::decodeLeb(s);
+  } catch (const ref::StreamError& e) {
+    throw io::FormatError(o.input.string() + ": " + e.what());
+  }
+  // Samples as stored: uint8, or uint16 little endian.
+  std::string raw;
+  if (s.sampleBits == 8) {
+    raw.assign(d.data.data().begin(), d.data.data().end());
+  } else {
+    raw.reserve(2 * d.data.data().size());
+    for (std::uint16_t v : d.data.data()) {
+      raw.push_back(static_cast<char>(v & 0xff));
+      raw.push_back(static_cast<char>(v >> 8));
+    }
+  }
+  if (!o.gradientsOut.empty()) {
+    if (d.gradients.empty()) throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
+    io::writeFileAtomically(o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size()));
+  }
+  io::writeFileAtomically(o.out, raw);
+  std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into " << o.out.string();
+  if (!o.gradientsOut.empty()) std::cout << " and their gradients (3 int8 per sample) into " << o.gradientsOut.string();
+  std::cout << "\n";
+  return 0;
+}
+
+int infoLebCommand(const InfoOptions& o) {
+  printInfo(io::readLebFile(o.input), std::cout);
+  return 0;
+}
+
+}  // namespace voxref::cli

@@ -1,0 +1,76 @@
+// Bit streams of the LEB codec's pages: most significant bit first (the first code bit is bit 7 of
+// the first byte), so that a canonical Huffman code read by table lookup is a prefix of the
+// peeked bits (FORMAT.md, section "Page payload").
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+namespace voxref::ref {
+
+class BitWriter {
+ public:
+  // Appends the low n bits of v (n <= 32), most significant first.
+  void put(std::uint32_t v, int n) {
+    acc_ = (acc_ << n) | (n == 32 ? v : (v & ((1u << n) - 1)));
+    fill_ += n;
+    while (fill_ >= 8) {
+      fill_ -= 8;
+      out_.push_back(static_cast<char>((acc_ >> fill_) & 0xff));
+    }
+  }
+  // Pads the last byte with zero bits and returns the bytes.
+  std::string finish() {
+    if (fill_ > 0) put(0, 8 - fill_);
+    return std::move(out_);
+  }
+  std::size_t bitCount() const { return out_.size() * 8 + static_cast<std::size_t>(fill_); }
+
+ private:
+  std::uint64_t acc_ = 0;
+  int fill_ = 0;
+  std::string out_;
+};
+
+// Reads bits from a byte range. Reading past the end yields zero bits and is remembered: the
+// caller checks overrun() (the page decoder turns it into "the page ends inside a code").
+class BitReader {
+ public:
+  explicit BitReader(std::string_view bytes) : p_(reinterpret_cast<const unsigned char*>(bytes.data())), size_(bytes.size()) { refill(); }
+
+  // The next n bits (1 <= n <= 32) without consuming them.
+  std::uint32_t peek(int n) const { return static_cast<std::uint32_t>(buf_ >> (64 - n)); }
+  void skip(int n) {
+    consumed_ += static_cast<std::size_t>(n);
+    buf_ <<= n;
+    avail_ -= n;
+    if (avail_ < 32) refill();
+  }
+  std::uint32_t get(int n) {
+    if (n == 0) return 0;
+    const std::uint32_t v = peek(n);
+    skip(n);
+    return v;
+  }
+  std::size_t bitsConsumed() const { return consumed_; }
+  bool overrun() const { return consumed_ > size_ * 8; }
+
+ private:
+  void refill() {
+    while (avail_ <= 56) {
+      const std::uint64_t byte = next_ < size_ ? p_[next_] : 0;
+      ++next_;
+      buf_ |= byte << (56 - avail_);
+      avail_ += 8;
+    }
+  }
+  const unsigned char* p_;
+  std::size_t size_;
+  std::size_t next_ = 0, consumed_ = 0;
+  std::uint64_t buf_ = 0;
+  int avail_ = 0;  // valid bits at the top of buf_ (zeros past the end count as valid)
+};
+
+}  // namespace voxref::ref

@@ -1,0 +1,110 @@
+#include "reference/leb/diamond_mesh.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace voxref::ref {
+namespace {
+
+long long length2(const GridPoint& a, const GridPoint& b) {
+  long long s = 0;
+  for (int i = 0; i < 3; ++i) s += static_cast<long long>(a[i] - b[i]) * (a[i] - b[i]);
+  return s;
+}
+
+// Index pair of the longest edge (unique in an LEB tetrahedron: its edges have the lengths of a
+// Kuhn simplex, scaled).
+std::pair<int, int> longestEdge(const Tetrahedron& t) {
+  std::pair<int, int> e{0, 1};
+  long long best = -1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j)
+      if (const long long l = length2(t.v[i], t.v[j]); l > best) {
+        best = l;
+        e = {i, j};
+      }
+  return e;
+}
+
+std::string text(const GridPoint& p) {
+  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
+}
+
+}  // namespace
+
+std::array<Tetrahedron, 6> rootTetrahedra(const LebGrid& g) {
+  const int n = g.side();
+  const int perm[6][2] = {{0, 1}, {0, 2}, {1, 0}, {1, 2}, {2, 0}, {2, 1}};
+  std::array<Tetrahedron, 6> tets{};
+  for (int i = 0; i < 6; ++i) {
+    Tetrahedron& t = tets[static_cast<std::size_t>(i)];
+    t.v[0] = {0, 0, 0};
+    t.v[1] = t.v[0];
+    t.v[1][perm[i][0]] = n;
+    t.v[2] = t.v[1];
+    t.v[2][perm[i][1]] = n;
+    t.v[3] = {n, n, n};
+  }
+  return tets;
+}
+
+bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex) {
+  const auto [i, j] = longestEdge(t);
+  for (int a = 0; a < 3; ++a) {
+    const int sum = t.v[static_cast<std::size_t>(i)][a] + t.v[static_cast<std::size_t>(j)][a];
+    if (sum % 2 != 0) return false;
+    splitVertex[a] = sum / 2;
+  }
+  return true;
+}
+
+DiamondMesh::DiamondMesh(const LebGrid& grid) : grid_(makeLebGrid(grid.k)) {}
+
+bool DiamondMesh::isSplit(const GridPoint& d) const { return grid_.contains(d) && split_.count(grid_.linearIndex(d)) != 0; }
+
+std::vector<GridPoint> DiamondMesh::split(const GridPoint& d) {
+  std::vector<GridPoint> done;
+  if (isSplit(d)) return done;
+  for (const GridPoint& parent : diamondParents(grid_, d))  // throws for a corner or an outside point
+    for (const GridPoint& q : split(parent)) done.push_back(q);
+  split_.insert(grid_.linearIndex(d));
+  done.push_back(d);
+  return done;
+}
+
+bool DiamondMesh::canMerge(const GridPoint& d) const {
+  if (!isSplit(d)) return false;
+  for (const GridPoint& child : diamondChildren(grid_, d))
+    if (isSplit(child)) return false;
+  return true;
+}
+
+void DiamondMesh::merge(const GridPoint& d) {
+  if (!canMerge(d))
+    throw std::logic_error("diamond " + text(d) + (isSplit(d) ? " has a split child: merge the children first" : " is not split"));
+  split_.erase(grid_.linearIndex(d));
+}
+
+std::vector<Tetrahedron> DiamondMesh::leafTetrahedra() const {
+  std::vector<Tetrahedron> leaves;
+  std::vector<Tetrahedron> stack;
+  for (const Tetrahedron& t : rootTetrahedra(grid_)) stack.push_back(t);
+  while (!stack.empty()) {
+    const Tetrahedron t = stack.back();
+    stack.pop_back();
+    GridPoint m;
+    if (!tetrahedronSplitVertex(t, m) || !isSplit(m)) {
+      leaves.push_back(t);
+      continue;
+    }
+    const auto [i, j] = longestEdge(t);
+    Tetrahedron a = t, b = t;
+    a.v[static_cast<std::size_t>(j)] = m;  // keeps v[i]
+    b.v[static_cast<std::size_t>(i)] = m;  // keeps v[j]
+    stack.push_back(a);
+    stack.push_back(b);
+  }
+  return leaves;
+}
+
+}  // namespace voxref::ref

@@ -1,0 +1,53 @@
+// A conforming longest-edge-bisection mesh, as a set of split diamonds (Gregorski et al. 2004,
+// section 2: "splitting and merging diamonds ensures that the mesh is always crack-free").
+//
+// Invariant: every parent of a split diamond is split. Then the leaf tetrahedra (the root's six,
+// bisected wherever their split vertex's diamond is split) meet face to face: no cracks. split()
+// keeps the invariant by splitting missing parents first (recursively); merge() refuses a diamond
+// with a split child. Exact integer geometry; not thread-safe.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <unordered_set>
+#include <vector>
+
+#include "reference/leb/leb_grid.h"
+
+namespace voxref::ref {
+
+struct Tetrahedron {
+  std::array<GridPoint, 4> v;
+};
+
+// The six tetrahedra of the root cube around its major diagonal (0,0,0)-(N,N,N).
+std::array<Tetrahedron, 6> rootTetrahedra(const LebGrid& g);
+// The split vertex of a tetrahedron of the hierarchy (the midpoint of its longest edge), or false
+// when that midpoint is not a grid point (a finest-level tetrahedron).
+bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex);
+
+class DiamondMesh {
+ public:
+  explicit DiamondMesh(const LebGrid& grid);
+
+  const LebGrid& grid() const { return grid_; }
+  bool isSplit(const GridPoint& d) const;
+  std::size_t splitCount() const { return split_.size(); }
+
+  // Splits d (a grid point other than a root corner), after every parent that is not split yet.
+  // Returns the diamonds newly split, parents first (empty when d was split already).
+  std::vector<GridPoint> split(const GridPoint& d);
+  // Whether d is split and none of its children is.
+  bool canMerge(const GridPoint& d) const;
+  // Merges d; throws std::logic_error naming d when !canMerge(d).
+  void merge(const GridPoint& d);
+
+  // The leaf tetrahedra of the current mesh.
+  std::vector<Tetrahedron> leafTetrahedra() const;
+
+ private:
+  LebGrid grid_;
+  std::unordered_set<std::uint64_t> split_;
+};
+
+}  // namespace voxref::ref

@@ -1,0 +1,84 @@
+#include "reference/leb/hz_order.h"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace voxref::ref {
+
+HzOrder::HzOrder(const LebGrid& grid) : grid_(makeLebGrid(grid.k)) {
+  levelBegin_.push_back(0);
+  levelBegin_.push_back(8);  // the corners
+  for (int level = 0; level < grid_.levelCount(); ++level) {
+    Level lv;
+    lv.scaleLog2 = grid_.k - 1 - level / 3;
+    lv.oddCount = 3 - level % 3;
+    lv.cellBits = grid_.k - lv.scaleLog2 - 1;
+    const std::uint64_t n = std::uint64_t{1} << lv.cellBits;
+    std::uint64_t begin = levelBegin_.back();
+    for (unsigned b = 0; b < 8; ++b) {
+      Block& block = lv.blocks[b];
+      block.begin = begin;
+      block.freeMask = ~b & 7u;
+      block.freeAxes = std::popcount(block.freeMask);
+      for (unsigned o = 1; o < 8; ++o)
+        if (std::popcount(o) == lv.oddCount && (o & b) == 0) block.orientations.push_back(o);
+      std::uint64_t cells = 1;
+      for (int a = 0; a < block.freeAxes; ++a) cells *= n;
+      block.cells = block.orientations.empty() ? 0 : cells;
+      begin += cells * block.orientations.size();
+    }
+    levels_.push_back(std::move(lv));
+    levelBegin_.push_back(begin);
+  }
+  if (levelBegin_.back() != grid_.pointCount()) throw std::logic_error("hierarchical z-order does not cover the grid");
+}
+
+std::uint64_t HzOrder::index(const GridPoint& p) const {
+  const LebPointClass c = classifyPoint(grid_, p);
+  if (c.level < 0) return (p[0] ? 1u : 0u) | (p[1] ? 2u : 0u) | (p[2] ? 4u : 0u);
+  const Level& lv = levels_[static_cast<std::size_t>(c.level)];
+  const int cellSide = 2 << lv.scaleLog2;
+  const int n = 1 << lv.cellBits;
+  unsigned boundary = 0;
+  int free[3], count = 0;
+  for (int a = 0; a < 3; ++a) {
+    const int cell = p[a] / cellSide;
+    if (cell == n)
+      boundary |= 1u << a;
+    else
+      free[count++] = cell;
+  }
+  const Block& block = lv.blocks[boundary];
+  const auto it = std::find(block.orientations.begin(), block.orientations.end(), c.oddAxes);
+  return block.begin + mortonEncode(free, count) * block.orientations.size() +
+         static_cast<std::uint64_t>(it - block.orientations.begin());
+}
+
+GridPoint HzOrder::point(std::uint64_t h) const {
+  if (h >= size()) throw std::out_of_range("hierarchical index " + std::to_string(h) + " is outside the grid of " + std::to_string(size()) + " points");
+  HzCursor cursor(*this, h);
+  return cursor.point();
+}
+
+HzCursor::HzCursor(const HzOrder& order, std::uint64_t start) : order_(&order), h_(start) {
+  if (h_ >= order.size()) return;
+  if (h_ < 8) {
+    level_ = -1;
+    cell_ = h_;
+  } else {
+    level_ = static_cast<int>(std::upper_bound(order.levelBegin_.begin(), order.levelBegin_.end(), h_) - order.levelBegin_.begin()) - 2;
+    const HzOrder::Level& lv = order.levels_[static_cast<std::size_t>(level_)];
+    block_ = 7;
+    while (lv.blocks[block_].begin > h_) --block_;
+    const HzOrder::Block& b = lv.blocks[block_];
+    const std::uint64_t r = h_ - b.begin;
+    cell_ = r / b.orientations.size();
+    orientation_ = static_cast<std::size_t>(r % b.orientations.size());
+    computeCell();
+  }
+  computePoint();
+}
+
+}  // namespace voxref::ref

@@ -1,0 +1,106 @@
+// Lead-1 coding of prediction deltas with one symbol of context (Gregorski et al. 2004, section
+// 3.1).
+//
+// A delta is a b-bit two's complement value d (b = 8 or 16). Its symbol is the position of the
+// leading one of |d| counted from 1 (0 for d = 0), so b + 1 symbols. A delta is written as the
+// Huffman code of its symbol in the table of the previous symbol (the context; 0 at the start of
+// every page), then, if d != 0, the sign bit (1 = negative) and the symbol - 1 bits of |d| below
+// its leading one, most significant first. |d| = 2^(b-1) occurs only with the sign bit set
+// (d = -2^(b-1)); a stream holding +2^(b-1) is not one the encoder writes and is rejected.
+//
+// The decoder is for untrusted bytes: any code that matches no symbol, a page that ends inside a
+// value, a magnitude outside the b-bit range, or bits left over beyond the zero padding of the last
+// byte throw StreamError with the byte offset.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/leb/bit_stream.h"
+#include "reference/leb/huffman.h"
+
+namespace voxref::ref {
+
+inline int lead1Symbol(std::int32_t delta) {
+  return std::bit_width(static_cast<std::uint32_t>(delta < 0 ? -static_cast<std::int64_t>(delta) : delta));
+}
+
+// The code lengths of every context: lengths[context * symbols() + symbol].
+struct Lead1Code {
+  int valueBits = 8;
+  std::vector<std::uint8_t> lengths;
+  int symbols() const { return valueBits + 1; }
+};
+
+// Counts (context, symbol) pairs of delta sequences; the context restarts at every sequence
+// (page). The lengths built from the counts code exactly those sequences.
+class Lead1Counter {
+ public:
+  explicit Lead1Counter(int valueBits);
+  void add(std::span<const std::int32_t> page);
+  void merge(const Lead1Counter& other);
+  Lead1Code code() const;  // package-merge lengths per context (huffman.h)
+
+ private:
+  int valueBits_;
+  std::vector<std::uint64_t> counts_;
+};
+
+// Why a code cannot be used ("" when it can), naming the context: see codeLengthProblem.
+std::string lead1CodeProblem(const Lead1Code& code);
+
+class Lead1Encoder {
+ public:
+  explicit Lead1Encoder(const Lead1Code& code);
+  // Appends the deltas of one page (context restarting at 0). Throws std::invalid_argument for a
+  // delta outside the b-bit range or a symbol the code has no length for.
+  void encodePage(std::span<const std::int32_t> deltas, BitWriter& out) const;
+
+ private:
+  int valueBits_;
+  int symbols_;
+  std::vector<std::uint8_t> lengths_;
+  std::vector<std::uint32_t> codes_;
+};
+
+class Lead1Decoder {
+ public:
+  explicit Lead1Decoder(const Lead1Code& code);  // throws std::invalid_argument when lead1CodeProblem != ""
+  // Decodes exactly out.size() deltas from one page's bytes (Lead1PageReader, then finish()).
+  // `streamOffset` is the offset of the page's first byte in the whole stream and `what` names
+  // the page ("data page 17"): both go into the StreamError messages.
+  void decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset, std::string_view what) const;
+
+ private:
+  friend class Lead1PageReader;
+  int valueBits_;
+  int symbols_;
+  std::vector<HuffmanDecodeTable> tables_;
+};
+
+// Reads the deltas of one page one at a time, for a decoder that does not know in advance how
+// many the page holds (the whole-volume decoder walks the grid and asks for a delta per point).
+// The decoder must outlive the reader.
+class Lead1PageReader {
+ public:
+  Lead1PageReader(const Lead1Decoder& decoder, std::string_view page, std::size_t streamOffset, std::string what);
+  std::int32_t next();  // throws StreamError: no code matches, the page ends, a delta out of range
+  void finish() const;  // throws StreamError unless only the zero padding of the last byte is left
+  std::size_t valuesRead() const { return read_; }
+
+ private:
+  [[noreturn]] void fail(const std::string& detail) const;
+  const Lead1Decoder* decoder_;
+  std::string_view page_;
+  BitReader in_;
+  std::size_t streamOffset_;
+  std::string what_;
+  int context_ = 0;
+  std::size_t read_ = 0;
+};
+
+}  // namespace voxref::ref

@@ -1,0 +1,69 @@
+// Lossless hierarchical compression on the LEB mesh (Gregorski et al. 2004, section 3): the
+// encoder, the whole-volume decoder and the stream statistics. Random access is leb_reader.h.
+//
+// Encoding: a volume of X x Y x Z samples (8 or 16 bits) lies in the smallest (2^k + 1)^3 grid
+// that covers it, origin at sample (0, 0, 0). Walking the grid in hierarchical z-order
+// (hz_order.h), every point is predicted from its split edge (prediction.h) and the delta of each
+// point inside the volume is coded; points of the padding are not coded (they take their
+// prediction). Deltas are cut into pages of 2^pageBits indices, each coded on its own with the
+// lead-1 code built from the counts of all pages (lead1_coder.h). The gradients channel
+// (gradients.h) is predicted and coded the same way, its three components interleaved per point,
+// with a code of its own (so Table 1 can report data and gradients separately).
+//
+// Exactness: lossless; decodeLeb(parseLebStream(encodeLeb(v))) == v, bit for bit, and the
+// gradients equal quantizedGradients(v). Deterministic for any thread count.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "reference/common/volume.h"
+#include "reference/leb/leb_stream.h"
+
+namespace voxref::ref {
+
+struct LebEncodeOptions {
+  int pageBits = 12;      // the paper's k = 12: 4096 points per page
+  bool gradients = true;  // add the gradients channel
+  int threads = 0;        // 0: all cores
+};
+
+// Throws std::invalid_argument for sampleBits other than 8 or 16, a sample >= 2^sampleBits, page
+// bits outside [kMinLebPageBits, kMaxLebPageBits] or a volume larger than the largest grid.
+std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& options = {});
+
+struct LebDecoded {
+  Volume<std::uint16_t> data;
+  std::vector<std::int8_t> gradients;  // 3 per sample; empty when the stream has no gradients
+};
+// Decodes every page (checking its CRC-32 and its code) and reconstructs the volume. Throws
+// StreamError naming the page and offset of the first corrupt page.
+LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
+
+// The deltas the encoder codes for one channel, in stream order (points inside the volume only):
+// what the benchmarks hand to a general-purpose coder to separate the predictor from the coder.
+std::vector<std::int32_t> lebDeltas(const Volume<std::uint16_t>& volume, int sampleBits, LebChannelKind kind);
+
+struct LebChannelStats {
+  LebChannelKind kind = LebChannelKind::Data;
+  std::uint64_t rawBytes = 0;         // the channel's values at 1 or 2 bytes each, volume samples only
+  std::uint64_t descriptorBytes = 0;  // code table, page table, CRCs
+  std::uint64_t payloadBytes = 0;
+  std::uint64_t codedValues = 0;
+  std::uint64_t compressedBytes() const { return descriptorBytes + payloadBytes; }
+};
+struct LebStats {
+  Dims3 dims{0, 0, 0};
+  int sampleBits = 8, k = 0, pageBits = 0;
+  std::uint64_t gridPoints = 0, volumePoints = 0;  // padding = gridPoints - volumePoints
+  std::uint64_t pages = 0, headerBytes = 0, streamBytes = 0;
+  std::vector<LebChannelStats> channels;
+  // Raw bytes over stream bytes; the header is counted with the data channel. The padding is
+  // not in the raw bytes (it costs no payload; its page table entries are counted).
+  double ratio() const;
+  double channelRatio(LebChannelKind kind) const;
+};
+LebStats lebStats(const LebStream& stream);
+
+}  // namespace voxref::ref

@@ -1,0 +1,153 @@
+#include "reference/leb/leb_grid.h"
+
+#include <algorithm>
+#include <bit>
+#include <stdexcept>
+#include <string>
+
+namespace voxref::ref {
+namespace {
+
+std::string text(const GridPoint& p) {
+  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
+}
+
+void requireInside(const LebGrid& g, const GridPoint& p) {
+  if (!g.contains(p)) throw std::invalid_argument("point " + text(p) + " is outside the " + std::to_string(g.pointsPerAxis()) + "^3 grid");
+}
+
+void keepInside(const LebGrid& g, std::vector<GridPoint>& points) {
+  std::erase_if(points, [&](const GridPoint& q) { return !g.contains(q); });
+}
+
+}  // namespace
+
+LebGrid makeLebGrid(int k) {
+  if (k < 0 || k > kMaxLebK)
+    throw std::invalid_argument("LEB grid exponent " + std::to_string(k) + " is outside 0.." + std::to_string(kMaxLebK) + " (at most " +
+                                std::to_string((1 << kMaxLebK) + 1) + " points per axis)");
+  return LebGrid{k};
+}
+
+LebGrid lebGridCovering(const std::array<int, 3>& dims) {
+  const int largest = std::max({dims[0], dims[1], dims[2]});
+  if (std::min({dims[0], dims[1], dims[2]}) < 1) throw std::invalid_argument("volume extents must be at least 1");
+  int k = 0;
+  while (k <= kMaxLebK && (1 << k) + 1 < largest) ++k;
+  if (k > kMaxLebK)
+    throw std::invalid_argument("a volume of " + std::to_string(largest) + " samples per axis needs more than the largest LEB grid (" +
+                                std::to_string((1 << kMaxLebK) + 1) + " per axis)");
+  return LebGrid{k};
+}
+
+bool isRootCorner(const LebGrid& g, const GridPoint& p) {
+  for (int v : p)
+    if (v != 0 && v != g.side()) return false;
+  return true;
+}
+
+LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
+  requireInside(g, p);
+  LebPointClass c;
+  if (isRootCorner(g, p)) {
+    c.scaleLog2 = g.k;
+    return c;
+  }
+  // The scale: the largest power of two dividing every coordinate (0 is divisible by all).
+  int s = g.k;
+  for (int v : p)
+    if (v != 0) s = std::min(s, std::countr_zero(static_cast<unsigned>(v)));
+  c.scaleLog2 = s;
+  for (int a = 0; a < 3; ++a)
+    if ((p[a] >> s) & 1) c.oddAxes |= 1u << a;
+  const int odd = std::popcount(c.oddAxes);
+  c.phase = odd - 1;
+  c.level = 3 * (g.k - 1 - s) + (3 - odd);
+  return c;
+}
+
+SplitEdge splitEdge(const LebGrid& g, const GridPoint& p) {
+  const LebPointClass c = classifyPoint(g, p);
+  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  return splitEdgeOf(p, c.scaleLog2, c.oddAxes);
+}
+
+std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p) {
+  const LebPointClass c = classifyPoint(g, p);
+  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  const int h = 1 << c.scaleLog2;
+  const SplitEdge e = splitEdge(g, p);
+  std::vector<GridPoint> ring;
+  if (c.phase == 2) {
+    // The other six corners of the cube of side 2h around p.
+    for (int m = 0; m < 8; ++m) {
+      const GridPoint q{p[0] + ((m & 1) ? h : -h), p[1] + ((m & 2) ? h : -h), p[2] + ((m & 4) ? h : -h)};
+      if (q != e.a && q != e.b) ring.push_back(q);
+    }
+  } else if (c.phase == 1) {
+    // The other two corners of the face square, and the centres of the two cubes beside it.
+    const int even = std::countr_zero(~c.oddAxes & 7u);
+    const int u = std::countr_zero(c.oddAxes);
+    GridPoint q = e.a;
+    q[u] = e.b[u];
+    ring.push_back(q);
+    q = e.b;
+    q[u] = e.a[u];
+    ring.push_back(q);
+    for (int d : {-h, h}) {
+      q = p;
+      q[even] += d;
+      ring.push_back(q);
+    }
+  } else {
+    // Around the cube edge: the four face centres beside p and the four cube centres between.
+    const int odd = std::countr_zero(c.oddAxes);
+    const int u = (odd + 1) % 3, v = (odd + 2) % 3;
+    for (int du : {-h, 0, h})
+      for (int dv : {-h, 0, h}) {
+        if (du == 0 && dv == 0) continue;
+        GridPoint q = p;
+        q[u] += du;
+        q[v] += dv;
+        ring.push_back(q);
+      }
+  }
+  keepInside(g, ring);
+  return ring;
+}
+
+std::vector<GridPoint> diamondParents(const LebGrid& g, const GridPoint& p) {
+  const int level = classifyPoint(g, p).level;
+  std::vector<GridPoint> parents;
+  if (level == 0) return parents;  // the root diamond: its ring is root corners
+  for (const GridPoint& q : diamondRing(g, p))
+    if (classifyPoint(g, q).level == level - 1) parents.push_back(q);
+  return parents;
+}
+
+std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
+  const LebPointClass c = classifyPoint(g, p);
+  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  const int h = 1 << c.scaleLog2;
+  std::vector<GridPoint> children;
+  if (c.phase == 2 || c.phase == 1) {
+    // Phase 2: the six face centres of the cube of side 2h; phase 1: the four edge midpoints of
+    // the face square. Both: p +- h along each odd axis.
+    for (int a = 0; a < 3; ++a)
+      if ((c.oddAxes >> a) & 1)
+        for (int d : {-h, h}) {
+          GridPoint q = p;
+          q[a] += d;
+          children.push_back(q);
+        }
+  } else if (c.scaleLog2 > 0) {
+    // Phase 0: the centres of the eight cubes of side h around p (the next, finer scale).
+    const int half = h / 2;
+    for (int m = 0; m < 8; ++m)
+      children.push_back({p[0] + ((m & 1) ? half : -half), p[1] + ((m & 2) ? half : -half), p[2] + ((m & 4) ? half : -half)});
+  }
+  keepInside(g, children);
+  return children;
+}
+
+}  // namespace voxref::ref

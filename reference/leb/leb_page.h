@@ -1,0 +1,25 @@
+// Pages of an LEB stream: the unit of decoding and of random access (Gregorski et al. 2004,
+// section 3.1: "the transformed coefficients are divided into pages and each page is encoded
+// separately"). Page i holds the hierarchical indices [i 2^p, (i + 1) 2^p); only the points
+// inside the volume are coded in it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "reference/leb/hz_order.h"
+#include "reference/leb/leb_stream.h"
+
+namespace voxref::ref {
+
+inline bool insideVolume(const GridPoint& p, const Dims3& d) { return p[0] < d[0] && p[1] < d[1] && p[2] < d[2]; }
+
+// Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
+// a reader of its deltas; the page holds one delta per component of each point inside the volume.
+Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
+
+// The page's deltas placed at their positions: 2^pageBits x components entries, 0 for the padding
+// and for indices past the grid's last point. Throws StreamError for a corrupt page.
+std::vector<std::int32_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page);
+
+}  // namespace voxref::ref

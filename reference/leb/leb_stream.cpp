@@ -1,0 +1,152 @@
+#include "reference/leb/leb_stream.h"
+
+#include <stdexcept>
+
+#include "reference/common/byte_stream.h"
+#include "reference/common/crc32.h"
+
+namespace voxref::ref {
+namespace {
+
+std::uint64_t pagesFor(const LebGrid& g, int pageBits) {
+  const std::uint64_t per = std::uint64_t{1} << pageBits;
+  return (g.pointCount() + per - 1) / per;
+}
+
+std::string dimsText(const Dims3& d) { return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]); }
+
+}  // namespace
+
+std::uint64_t LebStream::pageCount() const { return pagesFor(grid, pageBits); }
+
+std::string_view LebStream::page(const LebChannel& c, std::uint64_t index) const {
+  const std::uint64_t begin = c.pageOffset[index], end = c.pageOffset[index + 1];
+  return std::string_view(bytes).substr(c.payloadOffset + begin, end - begin);
+}
+
+const LebChannel* LebStream::channel(LebChannelKind kind) const {
+  for (const LebChannel& c : channels)
+    if (c.kind == kind) return &c;
+  return nullptr;
+}
+
+std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, const std::vector<LebChannelPayload>& channels) {
+  // FORMAT.md section 1: the header; the total size is patched in at the end.
+  ByteWriter w;
+  w.bytes("VXLB", 4);
+  w.le<std::uint16_t>(1);
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(sampleBits));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(grid.k));
+  for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(dims[a]));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(pageBits));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(channels.size()));
+  w.le<std::uint16_t>(0);
+  w.le<std::uint64_t>(0);  // total bytes, patched below
+  w.le<std::uint32_t>(0);  // header CRC, patched below
+  const std::uint64_t pages = pagesFor(grid, pageBits);
+  // Section 2: per channel, a descriptor and the pages.
+  for (const LebChannelPayload& c : channels) {
+    if (c.pages.size() != pages) throw std::invalid_argument("a channel needs " + std::to_string(pages) + " pages");
+    const std::size_t start = w.size();
+    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.kind));
+    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.components));
+    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.valueBits));
+    w.le<std::uint8_t>(c.isSigned ? 1 : 0);
+    w.le<std::uint32_t>(static_cast<std::uint32_t>(pages));
+    std::uint64_t payload = 0;
+    for (const std::string& p : c.pages) payload += p.size();
+    w.le<std::uint64_t>(payload);
+    w.bytes(c.code.lengths.data(), c.code.lengths.size());
+    for (const std::string& p : c.pages) w.le<std::uint32_t>(static_cast<std::uint32_t>(p.size()));
+    for (const std::string& p : c.pages) w.le<std::uint32_t>(crc32(p));
+    w.le<std::uint32_t>(crc32(std::string_view(w.str()).substr(start)));
+    for (const std::string& p : c.pages) w.bytes(p);
+  }
+  std::string& s = w.str();
+  const std::uint64_t total = s.size();
+  for (int i = 0; i < 8; ++i) s[24 + static_cast<std::size_t>(i)] = static_cast<char>((total >> (8 * i)) & 0xff);
+  const std::uint32_t hc = crc32(std::string_view(s).substr(0, 32));
+  for (int i = 0; i < 4; ++i) s[32 + static_cast<std::size_t>(i)] = static_cast<char>((hc >> (8 * i)) & 0xff);
+  return std::move(s);
+}
+
+LebStream parseLebStream(std::string bytes) {
+  LebStream s;
+  s.bytes = std::move(bytes);
+  const std::string_view b = s.bytes;
+  ByteReader r(b);
+  // Section 1: header.
+  if (r.take(4, "magic") != std::string_view("VXLB", 4)) r.fail(0, "magic: expected 'VXLB' (not an LEB stream)");
+  r.need(kLebHeaderBytes - 4, "header");
+  if (crc32(b.substr(0, 32)) != static_cast<std::uint32_t>(loadLe(b.data() + 32, 4))) r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
+  r.le<std::uint16_t>("version", 1, 1);
+  const std::size_t bitsAt = r.offset();
+  s.sampleBits = r.le<std::uint8_t>("sample_bits");
+  if (s.sampleBits != 8 && s.sampleBits != 16) r.fail(bitsAt, "sample_bits: expected 8 or 16, got " + std::to_string(s.sampleBits));
+  s.grid = LebGrid{r.le<std::uint8_t>("k", 0, kMaxLebK)};
+  for (int a = 0; a < 3; ++a) s.dims[a] = static_cast<int>(r.le<std::uint32_t>("extent", 1, static_cast<std::uint64_t>(s.grid.pointsPerAxis())));
+  if (lebGridCovering(s.dims).k != s.grid.k)
+    r.fail(7, "k: " + std::to_string(s.grid.k) + " is not the smallest grid covering " + dimsText(s.dims) + " (expected " +
+                  std::to_string(lebGridCovering(s.dims).k) + ")");
+  s.pageBits = r.le<std::uint8_t>("page_bits", kMinLebPageBits, kMaxLebPageBits);
+  const int channelCount = r.le<std::uint8_t>("channel_count", 1, 2);
+  r.le<std::uint16_t>("reserved", 0, 0);
+  const std::size_t totalAt = r.offset();
+  const std::uint64_t total = r.le<std::uint64_t>("total_bytes");
+  r.le<std::uint32_t>("header_crc");  // checked above
+  if (total != b.size())
+    r.fail(totalAt, "total_bytes: the header describes " + std::to_string(total) + " bytes, the stream has " + std::to_string(b.size()) +
+                        (b.size() < total ? " (truncated)" : " (trailing bytes)"));
+  const std::uint64_t pages = s.pageCount();
+  // Section 2: channels.
+  for (int ci = 0; ci < channelCount; ++ci) {
+    LebChannel c;
+    c.descriptorOffset = r.offset();
+    const std::size_t kindAt = r.offset();
+    const int kind = r.le<std::uint8_t>("kind", 0, 1);
+    if (kind != ci) r.fail(kindAt, "kind: channel " + std::to_string(ci) + " must be " + (ci == 0 ? "0 (data)" : "1 (gradients)"));
+    c.kind = static_cast<LebChannelKind>(kind);
+    const bool data = c.kind == LebChannelKind::Data;
+    c.components = r.le<std::uint8_t>("components", data ? 1 : 3, data ? 1 : 3);
+    c.valueBits = r.le<std::uint8_t>("value_bits", data ? static_cast<std::uint64_t>(s.sampleBits) : 8, data ? static_cast<std::uint64_t>(s.sampleBits) : 8);
+    c.isSigned = r.le<std::uint8_t>("signed", data ? 0 : 1, data ? 0 : 1) != 0;
+    r.le<std::uint32_t>("page_count", pages, pages);
+    const std::size_t payloadAt = r.offset();
+    const std::uint64_t payload = r.le<std::uint64_t>("payload_bytes");
+    const std::size_t tableAt = r.offset();
+    const std::size_t symbols = static_cast<std::size_t>(c.valueBits + 1);
+    const std::string_view table = r.take(symbols * symbols, "code lengths");
+    c.code.valueBits = c.valueBits;
+    c.code.lengths.assign(table.begin(), table.end());
+    if (const std::string p = lead1CodeProblem(c.code); !p.empty()) r.fail(tableAt, "code lengths: " + p);
+    c.decoder = std::make_shared<const Lead1Decoder>(c.code);
+    // The page table: its size is checked against the stream before it is read.
+    r.need(static_cast<std::size_t>(pages) * 8 + 4, "page table");
+    const std::size_t lengthsAt = r.offset();
+    c.pageOffset.assign(static_cast<std::size_t>(pages) + 1, 0);
+    for (std::uint64_t i = 0; i < pages; ++i) {
+      const std::uint64_t len = r.le<std::uint32_t>("page length");
+      c.pageOffset[i + 1] = c.pageOffset[i] + len;
+      if (c.pageOffset[i + 1] > payload)
+        r.fail(lengthsAt + 4 * i, "page length: page " + std::to_string(i) + " ends at byte " + std::to_string(c.pageOffset[i + 1]) +
+                                      " of the payload, past its end (" + std::to_string(payload) + " bytes)");
+    }
+    if (c.pageOffset.back() != payload)
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " + std::to_string(c.pageOffset.back()));
+    c.pageCrc.resize(static_cast<std::size_t>(pages));
+    for (std::uint64_t i = 0; i < pages; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
+    const std::size_t crcAt = r.offset();
+    if (crc32(b.substr(c.descriptorOffset, crcAt - c.descriptorOffset)) != r.le<std::uint32_t>("descriptor crc"))
+      r.fail(crcAt, "descriptor crc: CRC-32 mismatch (channel " + std::to_string(ci) + "'s descriptor is corrupt)");
+    c.descriptorBytes = r.offset() - c.descriptorOffset;
+    c.payloadOffset = r.offset();
+    if (payload > r.remaining())
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes of pages, the stream has " + std::to_string(r.remaining()) + " left");
+    r.take(static_cast<std::size_t>(payload), "pages");
+    s.channels.push_back(std::move(c));
+  }
+  if (r.remaining() != 0) r.fail(r.offset(), std::to_string(r.remaining()) + " bytes after the last channel");
+  return s;
+}
+
+}  // namespace voxref::ref

@@ -1,0 +1,68 @@
+// The byte stream of the LEB codec: FORMAT.md beside this file is its definition, and
+// parseLebStream follows it section by section.
+//
+// parseLebStream is safe on untrusted bytes: it checks every field, the header and descriptor
+// CRC-32s, the code tables (prefix-free, lengths within the limit) and that the page table fits
+// the stream, before it keeps anything; the page payloads are checked (CRC-32, then the lead-1
+// decoder) when a page is decoded. Errors are StreamError (byte_stream.h) naming the offset and
+// the field. Memory: the parsed stream keeps the bytes plus 12 bytes per page.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/common/volume.h"
+#include "reference/leb/leb_grid.h"
+#include "reference/leb/lead1_coder.h"
+
+namespace voxref::ref {
+
+enum class LebChannelKind : std::uint8_t { Data = 0, Gradients = 1 };
+
+struct LebChannel {
+  LebChannelKind kind = LebChannelKind::Data;
+  int components = 1;  // 1 for data, 3 for gradients (gx, gy, gz interleaved per point)
+  int valueBits = 8;   // data: the sample bits; gradients: 8
+  bool isSigned = false;
+  Lead1Code code;
+  std::shared_ptr<const Lead1Decoder> decoder;  // built from `code` by parseLebStream
+  std::size_t descriptorOffset = 0, descriptorBytes = 0;
+  std::size_t payloadOffset = 0;          // of the first page, in the stream
+  std::vector<std::uint64_t> pageOffset;  // page i is [pageOffset[i], pageOffset[i + 1]) after payloadOffset
+  std::vector<std::uint32_t> pageCrc;
+  std::uint64_t payloadBytes() const { return pageOffset.empty() ? 0 : pageOffset.back(); }
+};
+
+struct LebStream {
+  std::string bytes;  // the whole stream
+  Dims3 dims{0, 0, 0};  // the original volume; the grid covers it (padding beyond)
+  int sampleBits = 8;
+  LebGrid grid;
+  int pageBits = 12;  // a page holds 2^pageBits consecutive hierarchical indices
+  std::vector<LebChannel> channels;
+
+  std::uint64_t pageCount() const;
+  std::string_view page(const LebChannel& c, std::uint64_t index) const;
+  const LebChannel* channel(LebChannelKind kind) const;
+};
+
+inline constexpr std::size_t kLebHeaderBytes = 36;
+inline constexpr int kMinLebPageBits = 4, kMaxLebPageBits = 20;
+
+// The pieces the encoder hands over; serializeLebStream lays them out (and computes every CRC).
+struct LebChannelPayload {
+  LebChannelKind kind;
+  int components, valueBits;
+  bool isSigned;
+  Lead1Code code;
+  std::vector<std::string> pages;
+};
+std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, const std::vector<LebChannelPayload>& channels);
+
+// Throws StreamError. Takes the bytes by value: the stream keeps them.
+LebStream parseLebStream(std::string bytes);
+
+}  // namespace voxref::ref

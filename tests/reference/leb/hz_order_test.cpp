@@ -1,0 +1,101 @@
+#include "reference/leb/hz_order.h"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace voxref::ref {
+namespace {
+
+class HzOrderOnGrid : public ::testing::TestWithParam<int> {};
+
+TEST_P(HzOrderOnGrid, IsABijectionWithLevelsFirstAndCoarserPredictors) {
+  const LebGrid g = makeLebGrid(GetParam());
+  const HzOrder order(g);
+  ASSERT_EQ(order.size(), g.pointCount());
+  std::vector<char> seen(g.pointCount(), 0);
+  HzCursor cursor(order, 0);
+  int previousLevel = -1;
+  for (std::uint64_t h = 0; h < order.size(); ++h, cursor.next()) {
+    ASSERT_FALSE(cursor.done());
+    ASSERT_EQ(cursor.index(), h);
+    const GridPoint p = order.point(h);
+    ASSERT_EQ(cursor.point(), p) << h;
+    ASSERT_TRUE(g.contains(p));
+    ASSERT_EQ(order.index(p), h);
+    ASSERT_EQ(seen[g.linearIndex(p)]++, 0) << "point visited twice";
+    const LebPointClass pc = classifyPoint(g, p);
+    const int level = pc.level;
+    ASSERT_EQ(cursor.level(), level);
+    if (level >= 0) {
+      ASSERT_EQ(cursor.scaleLog2(), pc.scaleLog2);
+      ASSERT_EQ(cursor.oddAxes(), pc.oddAxes);
+    }
+    ASSERT_GE(level, previousLevel) << "levels first";
+    ASSERT_GE(h, order.levelBegin(level));
+    ASSERT_LT(h, order.levelBegin(level + 1));
+    previousLevel = level;
+    if (level >= 0) {
+      const SplitEdge e = splitEdge(g, p);
+      ASSERT_LT(order.index(e.a), h);
+      ASSERT_LT(order.index(e.b), h);
+    }
+  }
+  EXPECT_TRUE(cursor.done());
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(g.pointCount()));
+  EXPECT_THROW(order.point(order.size()), std::out_of_range);
+}
+
+INSTANTIATE_TEST_SUITE_P(K, HzOrderOnGrid, ::testing::Values(0, 1, 2, 3, 4, 5));
+
+TEST(HzOrder, InteriorOfALevelIsZOrderOverCells) {
+  // Level 3 of k = 3 (scale 2, phase 2): cube centres at odd multiples of 2, cells of side 4,
+  // n = 2: the eight interior cells in Morton order (x lowest bit).
+  const HzOrder order(makeLebGrid(3));
+  const std::uint64_t b = order.levelBegin(3);
+  EXPECT_EQ(order.point(b + 0), (GridPoint{2, 2, 2}));
+  EXPECT_EQ(order.point(b + 1), (GridPoint{6, 2, 2}));
+  EXPECT_EQ(order.point(b + 2), (GridPoint{2, 6, 2}));
+  EXPECT_EQ(order.point(b + 3), (GridPoint{6, 6, 2}));
+  EXPECT_EQ(order.point(b + 4), (GridPoint{2, 2, 6}));
+  EXPECT_EQ(order.point(b + 7), (GridPoint{6, 6, 6}));
+  EXPECT_EQ(order.levelBegin(4) - order.levelBegin(3), 8u);
+  // The corners come first, bit a of H for coordinate a.
+  EXPECT_EQ(order.point(5), (GridPoint{8, 0, 8}));
+}
+
+TEST(HzOrder, LargeGridRoundTripsAtRandomIndices) {
+  const HzOrder order(makeLebGrid(10));
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 20000; ++i) {
+    const std::uint64_t h = rng() % order.size();
+    ASSERT_EQ(order.index(order.point(h)), h);
+  }
+  HzCursor c(order, order.size() - 3);
+  c.next();
+  c.next();
+  EXPECT_FALSE(c.done());
+  EXPECT_EQ(c.point(), order.point(order.size() - 1));
+  c.next();
+  EXPECT_TRUE(c.done());
+}
+
+TEST(Morton, RoundTripsAndInterleavesFromTheLowestBit) {
+  const int a[3] = {1, 0, 0}, b[3] = {0, 1, 0}, c[3] = {0, 0, 1}, d[3] = {511, 300, 7};
+  EXPECT_EQ(mortonEncode(a, 3), 1u);
+  EXPECT_EQ(mortonEncode(b, 3), 2u);
+  EXPECT_EQ(mortonEncode(c, 3), 4u);
+  int back[3];
+  mortonDecode(mortonEncode(d, 3), 3, back);
+  EXPECT_EQ(back[0], 511);
+  EXPECT_EQ(back[1], 300);
+  EXPECT_EQ(back[2], 7);
+  mortonDecode(mortonEncode(d, 2), 2, back);
+  EXPECT_EQ(back[0], 511);
+  EXPECT_EQ(back[1], 300);
+}
+
+}  // namespace
+}  // namespace voxref::ref

@@ -1,0 +1,148 @@
+#include "reference/leb/lead1_coder.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "reference/common/byte_stream.h"
+
+namespace voxref::ref {
+namespace {
+
+std::string errorOf(const Lead1Decoder& d, std::string_view page, std::size_t count) {
+  std::vector<std::int32_t> out(count);
+  try {
+    d.decodePage(page, out, 100, "test page");
+  } catch (const StreamError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(Lead1, SymbolIsThePositionOfTheLeadingOne) {
+  EXPECT_EQ(lead1Symbol(0), 0);
+  EXPECT_EQ(lead1Symbol(1), 1);
+  EXPECT_EQ(lead1Symbol(-1), 1);
+  EXPECT_EQ(lead1Symbol(5), 3);  // the paper's example 00000101: leading one in bit 3
+  EXPECT_EQ(lead1Symbol(127), 7);
+  EXPECT_EQ(lead1Symbol(-128), 8);
+  EXPECT_EQ(lead1Symbol(-32768), 16);
+}
+
+TEST(Lead1, BitsOfOneValueFollowTheFormat) {
+  // One context-0 code where symbol 3 has the code "1" and symbol 0 the code "0" (others unused).
+  Lead1Code code;
+  code.valueBits = 8;
+  code.lengths.assign(81, 0);
+  code.lengths[0] = 1;  // context 0, symbol 0
+  code.lengths[3] = 1;  // context 0, symbol 3
+  code.lengths[3 * 9 + 0] = 1;  // context 3: symbols 0 and 3
+  code.lengths[3 * 9 + 3] = 1;
+  BitWriter w;
+  const std::int32_t deltas[] = {-5};
+  Lead1Encoder(code).encodePage(deltas, w);
+  // code 1, sign 1, then 01 (5 = 101 below its leading one): 1101, padded with zeros.
+  EXPECT_EQ(w.finish(), std::string(1, static_cast<char>(0b11010000)));
+}
+
+class Lead1RoundTrip : public ::testing::TestWithParam<int> {};
+
+TEST_P(Lead1RoundTrip, RandomDeltasIncludingTheExtremes) {
+  const int bits = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(bits));
+  const std::int32_t lo = -(1 << (bits - 1)), hi = (1 << (bits - 1)) - 1;
+  std::vector<std::vector<std::int32_t>> pages(5);
+  for (auto& p : pages) {
+    for (int i = 0; i < 3000; ++i) {
+      const int mag = static_cast<int>(rng() % static_cast<unsigned>(bits));  // geometric-ish spread of symbols
+      p.push_back(std::clamp(static_cast<std::int32_t>((rng() % (1u << mag)) * ((rng() & 1) ? 1 : -1)), lo, hi));
+    }
+    p.push_back(lo);
+    p.push_back(hi);
+    p.push_back(0);
+  }
+  Lead1Counter counter(bits);
+  for (const auto& p : pages) counter.add(p);
+  const Lead1Code code = counter.code();
+  ASSERT_EQ(lead1CodeProblem(code), "");
+  const Lead1Encoder enc(code);
+  const Lead1Decoder dec(code);
+  for (const auto& p : pages) {
+    BitWriter w;
+    enc.encodePage(p, w);
+    const std::string bytes = w.finish();
+    std::vector<std::int32_t> back(p.size());
+    dec.decodePage(bytes, back, 0, "page");
+    EXPECT_EQ(back, p);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Bits, Lead1RoundTrip, ::testing::Values(8, 16));
+
+class Lead1Corrupt : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    Lead1Counter c(8);
+    c.add(deltas);
+    code = c.code();
+    BitWriter w;
+    Lead1Encoder(code).encodePage(deltas, w);
+    page = w.finish();
+  }
+  std::vector<std::int32_t> deltas{0, 1, -1, 3, 0, 0, 7, -100, 2, 0, 1, 1, 0, -128, 127};
+  Lead1Code code;
+  std::string page;
+};
+
+TEST_F(Lead1Corrupt, TruncatedPageEndsInsideAValue) {
+  const Lead1Decoder d(code);
+  EXPECT_EQ(errorOf(d, page, deltas.size()), "");
+  const std::string e = errorOf(d, std::string_view(page).substr(0, page.size() - 2), deltas.size());
+  EXPECT_NE(e.find("the page ends inside this value"), std::string::npos) << e;
+  EXPECT_NE(e.find("test page: value "), std::string::npos) << e;
+}
+
+TEST_F(Lead1Corrupt, LeftOverBytesAndNonZeroPadding) {
+  const Lead1Decoder d(code);
+  EXPECT_NE(errorOf(d, page + std::string(2, '\0'), deltas.size()).find("2 bytes left over after the last value"), std::string::npos);
+  std::vector<std::int32_t> shorter(deltas.begin(), deltas.end() - 1);
+  // Decoding fewer values than the page holds leaves bits over as well.
+  EXPECT_NE(errorOf(d, page, shorter.size()), "");
+}
+
+TEST_F(Lead1Corrupt, ACodeThatIsNotPrefixFreeIsRefused) {
+  Lead1Code bad = code;
+  for (int s = 0; s < 9; ++s) bad.lengths[static_cast<std::size_t>(s)] = 1;  // nine 1-bit codes in context 0
+  EXPECT_NE(lead1CodeProblem(bad).find("context 0: the code lengths are not those of a prefix-free code"), std::string::npos);
+  EXPECT_THROW(Lead1Decoder{bad}, std::invalid_argument);
+}
+
+TEST_F(Lead1Corrupt, ASymbolPastTheTable) {
+  // Context 0 knows only symbols 0 and 1 (codes 0 and 10); the bits 11 match nothing.
+  Lead1Code sparse;
+  sparse.valueBits = 8;
+  sparse.lengths.assign(81, 0);
+  sparse.lengths[0] = 1;
+  sparse.lengths[1] = 2;
+  const Lead1Decoder d(sparse);
+  const std::string e = errorOf(d, std::string(1, static_cast<char>(0b11000000)), 1);
+  EXPECT_NE(e.find("the next 2 bits match no code of context 0"), std::string::npos) << e;
+  // A value after symbol 0 needs context 0; after symbol 1, context 1 has no codes at all.
+  const std::string e2 = errorOf(d, std::string(1, static_cast<char>(0b10000000)), 2);
+  EXPECT_NE(e2.find("context 1 has no codes"), std::string::npos) << e2;
+}
+
+TEST_F(Lead1Corrupt, PlusTwoToTheSevenIsOutsideTheRange) {
+  Lead1Code c8;
+  c8.valueBits = 8;
+  c8.lengths.assign(81, 0);
+  c8.lengths[0] = 1;  // context 0: symbol 0 has the code "0"
+  c8.lengths[8] = 1;  // and symbol 8 the code "1"
+  const Lead1Decoder d(c8);
+  // code 1, sign 0 (positive), then seven zero bits: +128.
+  const std::string e = errorOf(d, std::string{static_cast<char>(0x80), '\0'}, 1);
+  EXPECT_NE(e.find("delta +128 is outside the 8-bit range"), std::string::npos) << e;
+}
+
+}  // namespace
+}  // namespace voxref::ref

@@ -1,0 +1,271 @@
+#include "reference/leb/leb_codec.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "reference/common/byte_stream.h"
+#include "reference/common/crc32.h"
+#include "reference/leb/gradients.h"
+#include "reference/leb/leb_reader.h"
+
+namespace voxref::ref {
+namespace {
+
+Volume<std::uint16_t> noise(const Dims3& d, int bits, unsigned seed) {
+  Volume<std::uint16_t> v(d);
+  std::mt19937 rng(seed);
+  for (auto& s : v.data()) s = static_cast<std::uint16_t>(rng() & ((1u << bits) - 1));
+  return v;
+}
+
+// A smooth field with some structure (so predictions are mostly good).
+Volume<std::uint16_t> smooth(const Dims3& d, int bits) {
+  Volume<std::uint16_t> v(d);
+  const double top = (1 << bits) - 1;
+  for (int z = 0; z < d[2]; ++z)
+    for (int y = 0; y < d[1]; ++y)
+      for (int x = 0; x < d[0]; ++x)
+        v.at(x, y, z) = static_cast<std::uint16_t>(top * (0.5 + 0.5 * std::sin(0.21 * x + 0.13 * y * y / (1.0 + y) - 0.17 * z)));
+  return v;
+}
+
+void expectRoundTrip(const Volume<std::uint16_t>& v, int bits, int pageBits, const std::string& what) {
+  SCOPED_TRACE(what + ", page bits " + std::to_string(pageBits));
+  LebEncodeOptions o;
+  o.pageBits = pageBits;
+  const LebStream s = parseLebStream(encodeLeb(v, bits, o));
+  const LebDecoded d = decodeLeb(s);
+  ASSERT_EQ(d.data.dims(), v.dims());
+  EXPECT_EQ(d.data.data(), v.data());
+  EXPECT_EQ(d.gradients, quantizedGradients(v));
+  const LebStats st = lebStats(s);
+  EXPECT_EQ(st.volumePoints, sampleCount(v.dims()));
+  EXPECT_EQ(st.streamBytes, s.bytes.size());
+}
+
+TEST(LebCodec, RoundTripOfTheEdgeCases) {
+  for (int pageBits : {4, 12}) {
+    expectRoundTrip(Volume<std::uint16_t>({17, 17, 17}, 77), 8, pageBits, "constant");
+    Volume<std::uint16_t> spike({33, 33, 33}, 0);
+    spike.at(16, 9, 30) = 255;
+    expectRoundTrip(spike, 8, pageBits, "one spike");
+    expectRoundTrip(noise({20, 31, 9}, 8, 3), 8, pageBits, "full-range noise");
+    expectRoundTrip(noise({2, 2, 2}, 8, 4), 8, pageBits, "2x2x2");
+    expectRoundTrip(noise({1, 1, 1}, 8, 5), 8, pageBits, "1x1x1");
+    expectRoundTrip(smooth({37, 5, 101}, 8), 8, pageBits, "37x5x101");
+    Volume<std::uint16_t> wide = noise({19, 23, 17}, 16, 6);
+    wide.at(0, 0, 0) = 0;
+    wide.at(1, 0, 0) = 65535;
+    wide.at(2, 0, 0) = 0;
+    expectRoundTrip(wide, 16, pageBits, "uint16 using all 16 bits");
+    expectRoundTrip(smooth({65, 65, 65}, 16), 16, pageBits, "uint16 smooth, unpadded grid");
+    expectRoundTrip(Volume<std::uint16_t>({9, 9, 9}, 65535), 16, pageBits, "uint16 constant at the top");
+  }
+}
+
+TEST(LebCodec, SameBytesForEveryThreadCount) {
+  const Volume<std::uint16_t> v = smooth({40, 30, 20}, 8);
+  LebEncodeOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const std::string a = encodeLeb(v, 8, one), b = encodeLeb(v, 8, two);
+  EXPECT_EQ(a, b);
+  const LebStream s = parseLebStream(a);
+  EXPECT_EQ(decodeLeb(s, 1).data.data(), decodeLeb(s, 2).data.data());
+}
+
+TEST(LebCodec, PaddingCostsNoPayload) {
+  // The same 33^3 data padded into a 65^3 grid (by one extra sample along x) codes the same
+  // deltas plus those of the extra samples; the padding itself adds no coded values.
+  const LebStream s = parseLebStream(encodeLeb(smooth({34, 33, 33}, 8), 8));
+  const LebStats st = lebStats(s);
+  EXPECT_EQ(st.k, 6);
+  EXPECT_EQ(st.gridPoints, 65u * 65u * 65u);
+  EXPECT_EQ(st.channels[0].codedValues, 34u * 33u * 33u);
+  EXPECT_GT(st.ratio(), 1.0);
+}
+
+TEST(LebCodec, RejectsBadInput) {
+  EXPECT_THROW(encodeLeb(Volume<std::uint16_t>({4, 4, 4}, 256), 8), std::invalid_argument);
+  EXPECT_THROW(encodeLeb(Volume<std::uint16_t>({4, 4, 4}, 1), 12), std::invalid_argument);
+  LebEncodeOptions o;
+  o.pageBits = 3;
+  EXPECT_THROW(encodeLeb(Volume<std::uint16_t>({4, 4, 4}, 1), 8, o), std::invalid_argument);
+}
+
+TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
+  for (const Dims3 dims : {Dims3{37, 5, 101}, Dims3{33, 33, 33}}) {
+    const Volume<std::uint16_t> v = smooth(dims, 8);
+    LebEncodeOptions o;
+    o.pageBits = 8;
+    auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, 8, o)));
+    const std::vector<std::int8_t> g = quantizedGradients(v);
+    LebReader reader(s, 1 << 16);
+    std::mt19937 rng(9);
+    for (int i = 0; i < 3000; ++i) {
+      const int x = static_cast<int>(rng() % static_cast<unsigned>(dims[0])), y = static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
+                z = static_cast<int>(rng() % static_cast<unsigned>(dims[2]));
+      ASSERT_EQ(reader.sample({x, y, z}), v.at(x, y, z));
+      const auto gr = reader.gradient({x, y, z});
+      const std::size_t at = 3 * v.index(x, y, z);
+      ASSERT_EQ(gr[0], g[at]);
+      ASSERT_EQ(gr[1], g[at + 1]);
+      ASSERT_EQ(gr[2], g[at + 2]);
+    }
+    EXPECT_GT(reader.cacheStats().hits, 0u);
+    EXPECT_LE(reader.cacheStats().peakBytes, std::size_t{1} << 16);
+    // Whole pages: the points inside the volume equal the volume.
+    const HzOrder order(s->grid);
+    for (std::uint64_t page = 0; page < s->pageCount(); page += 7) {
+      const auto values = reader.reconstructPage(LebChannelKind::Data, page);
+      for (std::uint64_t i = 0; i < (std::uint64_t{1} << s->pageBits) && (page << s->pageBits) + i < order.size(); ++i) {
+        const GridPoint p = order.point((page << s->pageBits) + i);
+        if (p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2]) {
+          ASSERT_EQ(values[static_cast<std::size_t>(i)], v.at(p[0], p[1], p[2]));
+        }
+      }
+    }
+  }
+}
+
+TEST(LebReader, ABudgetOfZeroDecodesEveryTimeAndStillAnswers) {
+  const Volume<std::uint16_t> v = smooth({17, 17, 17}, 8);
+  auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, 8)));
+  LebReader reader(s, 0);
+  EXPECT_EQ(reader.sample({3, 4, 5}), v.at(3, 4, 5));
+  EXPECT_EQ(reader.sample({3, 4, 5}), v.at(3, 4, 5));
+  EXPECT_EQ(reader.cacheStats().hits, 0u);
+  EXPECT_EQ(reader.cacheStats().bytes, 0u);
+  EXPECT_THROW(reader.sample({17, 40, 0}), std::invalid_argument);
+}
+
+// --- Corrupt streams ------------------------------------------------------------------------
+
+class LebCorrupt : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    LebEncodeOptions o;
+    o.pageBits = 6;
+    bytes = encodeLeb(smooth({9, 7, 5}, 8), 8, o);
+    layout = parseLebStream(bytes);
+  }
+  static void put32(std::string& b, std::size_t at, std::uint32_t v) {
+    for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xff);
+  }
+  // Recomputes every checksum, so that a test reaches the check behind them.
+  void fixCrcs(std::string& b) const {
+    put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
+    for (const LebChannel& c : layout.channels) {
+      const std::size_t pages = c.pageCrc.size();
+      const std::size_t crcs = c.descriptorOffset + c.descriptorBytes - 4 - 4 * pages;
+      for (std::size_t p = 0; p < pages; ++p)
+        put32(b, crcs + 4 * p, crc32(std::string_view(b).substr(c.payloadOffset + c.pageOffset[p], c.pageOffset[p + 1] - c.pageOffset[p])));
+      put32(b, c.descriptorOffset + c.descriptorBytes - 4, crc32(std::string_view(b).substr(c.descriptorOffset, c.descriptorBytes - 4)));
+    }
+  }
+  static std::string errorOf(std::string b) {
+    try {
+      decodeLeb(parseLebStream(std::move(b)));
+    } catch (const StreamError& e) {
+      return e.what();
+    }
+    return "";
+  }
+  std::size_t tableAt(const LebChannel& c) const { return c.descriptorOffset + 16; }
+  std::size_t pageLengthsAt(const LebChannel& c) const { return tableAt(c) + c.code.lengths.size(); }
+
+  std::string bytes;
+  LebStream layout;
+};
+
+TEST_F(LebCorrupt, TheIntactStreamDecodes) { EXPECT_EQ(errorOf(bytes), ""); }
+
+TEST_F(LebCorrupt, NotAStreamAndTruncated) {
+  EXPECT_EQ(errorOf("JUNK" + bytes.substr(4)), "offset 0: magic: expected 'VXLB' (not an LEB stream)");
+  EXPECT_NE(errorOf(bytes.substr(0, bytes.size() - 1)).find("total_bytes: the header describes " + std::to_string(bytes.size()) + " bytes, the stream has " +
+                                                             std::to_string(bytes.size() - 1) + " (truncated)"),
+            std::string::npos);
+  EXPECT_NE(errorOf(bytes.substr(0, 20)).find("the stream ends after"), std::string::npos);
+}
+
+TEST_F(LebCorrupt, OversizedClaimsAreRefusedBeforeAllocating) {
+  std::string b = bytes;
+  b[7] = 11;  // k
+  fixCrcs(b);
+  EXPECT_EQ(errorOf(b), "offset 7: k: expected 0..10, got 11");
+  b = bytes;
+  b[7] = 10;  // a 1025^3 grid: its page table would not fit the stream
+  put32(b, 8, 1025);
+  put32(b, 12, 1025);
+  put32(b, 16, 1025);
+  fixCrcs(b);
+  const std::string e = errorOf(b);
+  EXPECT_NE(e.find("page_count: expected"), std::string::npos) << e;
+}
+
+TEST_F(LebCorrupt, APageLengthPastTheEnd) {
+  std::string b = bytes;
+  const LebChannel& c = layout.channels[0];
+  put32(b, pageLengthsAt(c), 0x7fffffff);
+  fixCrcs(b);
+  const std::string e = errorOf(b);
+  EXPECT_NE(e.find("page length: page 0 ends at byte 2147483647 of the payload, past its end"), std::string::npos) << e;
+}
+
+TEST_F(LebCorrupt, ACodeTableThatIsNotPrefixFree) {
+  std::string b = bytes;
+  const LebChannel& c = layout.channels[0];
+  for (std::size_t s = 0; s < 9; ++s) b[tableAt(c) + s] = 1;
+  fixCrcs(b);
+  const std::string e = errorOf(b);
+  EXPECT_NE(e.find("code lengths: context 0: the code lengths are not those of a prefix-free code"), std::string::npos) << e;
+}
+
+TEST_F(LebCorrupt, ASymbolPastTheTable) {
+  // Context 0 keeps one code, "0", for symbol 0; the first page then starts with a 1 bit.
+  std::string b = bytes;
+  const LebChannel& c = layout.channels[0];
+  for (std::size_t s = 0; s < 9; ++s) b[tableAt(c) + s] = s == 0 ? 1 : 0;
+  b[c.payloadOffset] = static_cast<char>(0xff);
+  fixCrcs(b);
+  const std::string e = errorOf(b);
+  EXPECT_NE(e.find("data page 0: value 0: "), std::string::npos) << e;
+  EXPECT_NE(e.find("the next 1 bits match no code of context 0"), std::string::npos) << e;
+}
+
+TEST_F(LebCorrupt, ChecksumsCatchFlippedBits) {
+  std::string b = bytes;
+  b[layout.channels[0].payloadOffset + 1] ^= 0x10;
+  EXPECT_NE(errorOf(b).find("data page 0: CRC-32 mismatch (the page is corrupt)"), std::string::npos);
+  b = bytes;
+  b[9] ^= 1;
+  EXPECT_EQ(errorOf(b), "offset 32: header_crc: CRC-32 mismatch (the header is corrupt)");
+  b = bytes;
+  b[tableAt(layout.channels[1]) + 3] ^= 1;
+  EXPECT_NE(errorOf(b).find("descriptor crc: CRC-32 mismatch (channel 1's descriptor is corrupt)"), std::string::npos);
+}
+
+TEST_F(LebCorrupt, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecoder) {
+  // Single-byte changes everywhere. Without repaired checksums every one must be reported; with
+  // repaired ones the decoder must throw StreamError or decode some volume (a changed raw bit
+  // of a delta is a valid stream), never fail in any other way.
+  std::mt19937 rng(4);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::string b = bytes;
+    const std::size_t at = rng() % b.size();
+    b[at] = static_cast<char>(b[at] ^ static_cast<char>(1 + rng() % 255));
+    if (trial % 2) fixCrcs(b);
+    try {
+      const LebDecoded d = decodeLeb(parseLebStream(b));
+      if (!(trial % 2)) ADD_FAILURE() << "a change at byte " << at << " passed every checksum";
+      (void)d;
+    } catch (const StreamError&) {
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "byte " << at << ": not a StreamError: " << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace voxref::ref
