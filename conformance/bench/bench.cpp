@@ -1,8 +1,12 @@
 #include "conformance/bench/bench.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
 #include <ostream>
 #include <sstream>
 
+#include "conformance/bench/leb_bench.h"
 #include "conformance/bench/sparsegrid_bench.h"
 #include "conformance/bench/timevarying_bench.h"
 #include "conformance/catalog.h"
@@ -44,9 +48,38 @@ std::string formatSeconds(const Timing& t) {
   return std::string(buf) + (t.estimated ? "*" : "");
 }
 
+std::filesystem::path benchVolumes(const BenchOptions& o) { return o.volumes.empty() ? std::filesystem::path(VOXREF_DEFAULT_SHARED_VOLUMES) : o.volumes; }
+
+Timing measure(const std::function<void()>& fn) {
+  using Clock = std::chrono::steady_clock;
+  std::vector<double> runs;
+  const auto start = Clock::now();
+  do {
+    const auto t0 = Clock::now();
+    fn();
+    runs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
+  } while (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0);
+  std::sort(runs.begin(), runs.end());
+  return {runs[runs.size() / 2], runs.front(), runs.back(), static_cast<int>(runs.size()), false};
+}
+
+Timing measureOnce(const std::function<void()>& fn) {
+  const auto t0 = std::chrono::steady_clock::now();
+  fn();
+  const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return {s, s, s, 1, false};
+}
+
+std::string formatNumber(const char* format, double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
 int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   std::vector<std::string> ids = sparseGridBenchIds();
   for (const auto& id : timeVaryingBenchIds()) ids.push_back(id);
+  for (const auto& id : lebBenchIds()) ids.push_back(id);
   bool any = false;
   for (const auto& id : ids) any |= globMatch(options.filter, id);
   if (!any) {
@@ -61,6 +94,7 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
 
   std::vector<BenchTable> tables = sparseGridBench(options, *gl, profile);
   for (BenchTable& t : timeVaryingBench(options, *gl, profile)) tables.push_back(std::move(t));
+  for (BenchTable& t : lebBench(options)) tables.push_back(std::move(t));
   std::string md = "# voxref bench\n\nDriver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
                    (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
                    (options.quick ? ". Quick mode (smoke run: small sizes)." : ".") + "\n\n";

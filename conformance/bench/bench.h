@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -19,7 +20,11 @@ struct BenchOptions {
   gpu::Driver driver = gpu::Driver::Llvmpipe;
   bool quick = false;  // small sizes and levels: a smoke run that every test run can afford
   int threads = 0;
+  std::filesystem::path volumes;  // the real volumes (../shared/data/volumes); empty: the built-in default
 };
+
+// The folder of real volumes the benchmarks read: options.volumes, else the build's default.
+std::filesystem::path benchVolumes(const BenchOptions& options);
 
 struct BenchTable {
   std::string id;     // "sparsegrid.table1_time"
@@ -40,6 +45,13 @@ struct Timing {
 };
 nlohmann::json toJson(const Timing& t);
 std::string formatSeconds(const Timing& t);
+// Median of repeated runs of fn: one run when it takes a second or more, else up to five within
+// about two seconds.
+Timing measure(const std::function<void()>& fn);
+// One run of fn.
+Timing measureOnce(const std::function<void()>& fn);
+// printf-style formatting of one number ("%.2f:1").
+std::string formatNumber(const char* format, double v);
 
 // Runs the benchmarks whose id matches the filter, writes out/bench.md and out/bench.json, and
 // prints the markdown. Returns the exit status (2 when nothing matches).

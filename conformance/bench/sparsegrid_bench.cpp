@@ -21,19 +21,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Median of repeated runs: one run when it takes a second or more, else up to five within ~2 s.
-Timing measure(const std::function<void()>& fn) {
-  std::vector<double> runs;
-  const auto start = Clock::now();
-  do {
-    const auto t0 = Clock::now();
-    fn();
-    runs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  } while (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0);
-  std::sort(runs.begin(), runs.end());
-  return {runs[runs.size() / 2], runs.front(), runs.back(), static_cast<int>(runs.size()), false};
-}
-
 // One plane of `frame` as a frame of its own (still on the float32 lattice).
 ref::PlaneFrame planeOf(const ref::PlaneFrame& frame, int k) {
   ref::PlaneFrame f = frame;

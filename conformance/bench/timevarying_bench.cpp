@@ -1,12 +1,11 @@
 #include "conformance/bench/timevarying_bench.h"
 
-#include <zstd.h>
-
 #include <chrono>
 #include <cmath>
 #include <map>
 #include <memory>
 
+#include "conformance/bench/baselines.h"
 #include "conformance/catalog.h"
 #include "conformance/progress.h"
 #include "conformance/timevarying/fetch_classification.h"
@@ -20,19 +19,6 @@ namespace voxref::conf {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-Timing timeOnce(const std::function<void()>& fn) {
-  const auto t0 = Clock::now();
-  fn();
-  const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-  return {s, s, s, 1, false};
-}
-
-std::string fmt(const char* f, double v) {
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
 
 struct Dataset {
   double sparseness;
@@ -76,12 +62,12 @@ BenchTable table2(const BenchOptions& o) {
     for (int level = 3; level <= 5; ++level) {
       if (o.quick && level > 3) break;
       ref::TimeVaryingTextures tex;
-      const Timing enc = timeOnce([&] { tex = ref::encodeTimeVarying(ds.series, tf, {level}); });
+      const Timing enc = measureOnce([&] { tex = ref::encodeTimeVarying(ds.series, tf, {level}); });
       const auto& st = tex.stats;
       const double mb = static_cast<double>(st.inputVoxels) / 1e6;
-      t.rows.push_back({std::to_string(d) + " (" + fmt("%.2f %%", 100 * ds.achieved) + ")", std::to_string(level), std::to_string(st.indexBytes),
-                        std::to_string(st.refinementBytes), fmt("%.2f:1", st.ratioAgainst4Bytes()), fmt("%.2f:1", st.ratioAgainst1Byte()),
-                        std::to_string(st.distinctBlocks), std::to_string(st.hashHits), std::to_string(st.hashCollisions), fmt("%.0f", mb / enc.median),
+      t.rows.push_back({std::to_string(d) + " (" + formatNumber("%.2f %%", 100 * ds.achieved) + ")", std::to_string(level), std::to_string(st.indexBytes),
+                        std::to_string(st.refinementBytes), formatNumber("%.2f:1", st.ratioAgainst4Bytes()), formatNumber("%.2f:1", st.ratioAgainst1Byte()),
+                        std::to_string(st.distinctBlocks), std::to_string(st.hashHits), std::to_string(st.hashCollisions), formatNumber("%.0f", mb / enc.median),
                         o.quick ? "" : paper[d - 1][level - 3][0], o.quick ? "" : paper[d - 1][level - 3][1],
                         o.quick ? "" : std::string(paper[d - 1][level - 3][2]) + ":1"});
       t.data["rows"].push_back({{"data_set", d}, {"sparseness", ds.achieved}, {"level", level}, {"index_bytes", st.indexBytes},
@@ -93,13 +79,12 @@ BenchTable table2(const BenchOptions& o) {
     const std::string raw = concat(ds.series);
     for (int zl : {3, 19}) {
       if (o.quick && zl == 19) continue;
-      std::string out(ZSTD_compressBound(raw.size()), '\0');
-      std::size_t size = 0;
-      const Timing z = timeOnce([&] { size = ZSTD_compress(out.data(), out.size(), raw.data(), raw.size(), zl); });
-      if (ZSTD_isError(size)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(size));
-      t.rows.push_back({std::to_string(d) + " (" + fmt("%.2f %%", 100 * ds.achieved) + ")", "zstd -" + std::to_string(zl), "-",
-                        std::to_string(size) + " (raw uint8)", fmt("%.2f:1", 4.0 * raw.size() / size), fmt("%.2f:1", double(raw.size()) / size), "-",
-                        "-", "-", fmt("%.0f", raw.size() / 1e6 / z.median), "", "", ""});
+      const BaselineResult b = zstdBaseline(raw, zl);
+      const std::size_t size = b.bytes;
+      const Timing& z = b.compress;
+      t.rows.push_back({std::to_string(d) + " (" + formatNumber("%.2f %%", 100 * ds.achieved) + ")", "zstd -" + std::to_string(zl), "-",
+                        std::to_string(size) + " (raw uint8)", formatNumber("%.2f:1", 4.0 * raw.size() / size), formatNumber("%.2f:1", double(raw.size()) / size), "-",
+                        "-", "-", formatNumber("%.0f", raw.size() / 1e6 / z.median), "", "", ""});
       t.data["baselines"].push_back({{"data_set", d}, {"codec", "zstd -" + std::to_string(zl)}, {"bytes", size}, {"seconds", z.median}});
     }
   }
@@ -127,10 +112,10 @@ BenchTable table3(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionP
     const int s = o.quick ? size / 8 : size, p = o.quick ? slices / 10 : slices;
     const ref::PlaneFrame frame = ref::orbitFrame(30.0, 20.0, s, s, p);
     const int step = ds.series.steps.size() > 1 ? static_cast<int>(ds.series.steps.size()) - 1 : 0;
-    const Timing g = timeOnce([&] { (void)gpu::compositeGl(gl, tex, ref::DecoderVariant::Paper, step, frame); });
+    const Timing g = measureOnce([&] { (void)gpu::compositeGl(gl, tex, ref::DecoderVariant::Paper, step, frame); });
     Timing e{};
-    if (profile) e = timeOnce([&] { (void)emu::emulateComposite(tex, ref::DecoderVariant::Paper, step, frame, *profile, o.threads); });
-    t.rows.push_back({std::to_string(p), std::to_string(s) + "^2", fmt("%.2f", 1.0 / g.median), profile ? fmt("%.2f", 1.0 / e.median) : "n/a",
+    if (profile) e = measureOnce([&] { (void)emu::emulateComposite(tex, ref::DecoderVariant::Paper, step, frame, *profile, o.threads); });
+    t.rows.push_back({std::to_string(p), std::to_string(s) + "^2", formatNumber("%.2f", 1.0 / g.median), profile ? formatNumber("%.2f", 1.0 / e.median) : "n/a",
                       o.quick ? "" : paper[i]});
     t.data["rows"].push_back({{"slices", p}, {"image", s}, {"gl", toJson(g)}, {"emulation", toJson(e)}});
     ++i;
@@ -164,11 +149,11 @@ BenchTable addressVariants(const BenchOptions& o, gpu::Context& gl, const emu::P
   const int step = static_cast<int>(ds.series.steps.size()) - 1;
   for (const V& v : variants) {
     const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(ds.series, tf, {o.quick ? 3 : 4, v.encoding});
-    const Timing g = timeOnce([&] { (void)gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); });
+    const Timing g = measureOnce([&] { (void)gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); });
     std::string wrong = "n/a", colours = "n/a", emuTime = "n/a";
     if (profile) {
       emu::EmulatedDecode decoded;
-      const Timing e = timeOnce([&] { decoded = emu::emulateDecodePlanes(tex, v.decoder, step, frame, *profile, o.threads); });
+      const Timing e = measureOnce([&] { decoded = emu::emulateDecodePlanes(tex, v.decoder, step, frame, *profile, o.threads); });
       const FetchCounts c = classifyFetches(tex, ds.series, tf, step, frame, decoded);
       wrong = std::to_string(c.wrong()) + " of " + std::to_string(c.samples);
       colours = std::to_string(c.wrongColour);

@@ -9,7 +9,7 @@ namespace voxref::cli {
 int runBench(const BenchOptions& o) {
   const auto driver = gpu::parseDriver(o.driver);
   if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "'");
-  conf::BenchOptions b{o.filter, o.out, *driver, o.quick, o.threads};
+  conf::BenchOptions b{o.filter, o.out, *driver, o.quick, o.threads, o.volumes};
   return conf::runBenchmarks(b, std::cout);
 }
 

@@ -40,6 +40,7 @@ struct BenchOptions {
   std::string driver = "llvmpipe";
   bool quick = false;
   int threads = 0;
+  std::filesystem::path volumes;
 };
 int runBench(const BenchOptions& o);
 

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   benchCmd->add_option("--driver", bench.driver, "GL driver")->default_val("llvmpipe");
   benchCmd->add_option("--threads", bench.threads, "CPU threads for CPU paths (0: all)")->default_val(0);
   benchCmd->add_flag("--quick", bench.quick, "small sizes and few levels, for a smoke run");
+  benchCmd->add_option("--volumes", bench.volumes, "folder of the real volumes (default: ../shared/data/volumes beside the source tree)");
 
   EncodeOptions encode;
   auto* encodeCmd = app.add_subcommand("encode", "encode volumes with a codec into a file");

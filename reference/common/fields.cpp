@@ -48,6 +48,45 @@ double figure9(double x, double y, double z) {
   return a || b || c ? 0.0 : 0.8;
 }
 
+// The 60 vertices of a truncated icosahedron (the C60 cage): the even permutations of
+// (0, +-1, +-3 phi), (+-1, +-(2 + phi), +-2 phi) and (+-phi, +-2, +-(2 phi + 1)), phi the golden
+// ratio; all at distance sqrt(9 phi + 10) from the origin.
+std::vector<std::array<double, 3>> makeBuckyballVertices() {
+  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+  const double base[3][3] = {{0.0, 1.0, 3.0 * phi}, {1.0, 2.0 + phi, 2.0 * phi}, {phi, 2.0, 2.0 * phi + 1.0}};
+  const int evenPermutations[3][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}};
+  std::vector<std::array<double, 3>> v;
+  for (const auto& b : base)
+    for (const auto& perm : evenPermutations)
+      for (int signs = 0; signs < 8; ++signs) {
+        std::array<double, 3> p{};
+        bool duplicate = false;
+        for (int a = 0; a < 3; ++a) {
+          const double c = b[perm[a]];
+          const bool negative = (signs >> a) & 1;
+          if (negative && c == 0.0) duplicate = true;  // -0 is 0
+          p[static_cast<std::size_t>(a)] = negative ? -c : c;
+        }
+        if (!duplicate) v.push_back(p);
+      }
+  return v;
+}
+
+// Gaussian "atoms" of width 0.03 at the C60 vertices, on a sphere of radius 0.35 around the
+// cube's centre.
+double gaussianBuckyball(double x, double y, double z) {
+  static const std::vector<std::array<double, 3>> vertices = makeBuckyballVertices();
+  constexpr double kRadius = 0.35, kSigma = 0.03;
+  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+  const double scale = kRadius / std::sqrt(9.0 * phi + 10.0);
+  double sum = 0.0;
+  for (const auto& v : vertices) {
+    const double dx = x - 0.5 - scale * v[0], dy = y - 0.5 - scale * v[1], dz = z - 0.5 - scale * v[2];
+    sum += std::exp(-(dx * dx + dy * dy + dz * dz) / (2.0 * kSigma * kSigma));
+  }
+  return std::min(1.0, sum);
+}
+
 double ridge(double x, double y, double z) {
   const double d = (x + y + z - 1.5) / 0.02;
   return std::exp(-d * d);
@@ -56,7 +95,7 @@ double ridge(double x, double y, double z) {
 }  // namespace
 
 std::vector<std::string> analyticFieldNames() {
-  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9"};
+  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9", "gaussian_buckyball"};
 }
 
 Field analyticField(std::string_view name) {
@@ -67,6 +106,7 @@ Field analyticField(std::string_view name) {
   if (name == "zero") return {std::string(name), [](double, double, double) { return 0.0; }};
   if (name == "ridge") return {std::string(name), ridge};
   if (name == "figure9") return {std::string(name), figure9};
+  if (name == "gaussian_buckyball") return {std::string(name), gaussianBuckyball};
   std::string known;
   for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown analytic field '" + std::string(name) + "' (known: " + known + ")");
@@ -92,6 +132,20 @@ Field volumeField(std::string name, std::shared_ptr<const Volume<std::uint8_t>> 
     return scale * lerp(lerp(c00, c10, w[1]), lerp(c01, c11, w[1]), w[2]);
   };
   return {std::move(name), eval};
+}
+
+std::vector<std::array<double, 3>> buckyballVertices() { return makeBuckyballVertices(); }
+
+Volume<std::uint8_t> sampleFieldU8(const Field& field, const Dims3& dims) {
+  Volume<std::uint8_t> v(dims);
+  auto coord = [](int i, int n) { return n > 1 ? static_cast<double>(i) / (n - 1) : 0.5; };
+  for (int z = 0; z < dims[2]; ++z)
+    for (int y = 0; y < dims[1]; ++y)
+      for (int x = 0; x < dims[0]; ++x) {
+        const double f = field(coord(x, dims[0]), coord(y, dims[1]), coord(z, dims[2]));
+        v.at(x, y, z) = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(f, 0.0, 1.0)));
+      }
+  return v;
 }
 
 }  // namespace voxref::ref

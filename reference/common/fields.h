@@ -6,6 +6,7 @@
 // is "resampled to 2^n+1 points per axis" for a sparse grid.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -36,9 +37,20 @@ struct Field {
 //                     (1/4,1/2,1/2), (1/2,1/4,1/2), (1/2,1/2,1/4), 0.8 everywhere else; sampled
 //                     on a level-2 sparse grid, no order of unscaled blend passes evaluates it
 //                     correctly (conformance/sparsegrid/figure9_conf.cpp)
+//   gaussian_buckyball 60 Gaussian atoms (sigma 0.03) at the vertices of a truncated icosahedron
+//                     of radius 0.35 around the centre: a synthetic C60, like the buckyball of
+//                     Gregorski et al. 2004 ("a synthetic dataset made from Gaussian functions")
 // Throws std::invalid_argument naming the known fields for an unknown name.
 Field analyticField(std::string_view name);
 std::vector<std::string> analyticFieldNames();
+
+// The 60 vertices of the truncated icosahedron gaussian_buckyball uses (centred at the origin,
+// edge length 2).
+std::vector<std::array<double, 3>> buckyballVertices();
+
+// The field sampled on a grid of `dims` points spanning [0, 1]^3 (sample i at i / (n - 1); 0.5 on
+// an axis of one sample), stored as round(255 f) with f clamped to [0, 1].
+Volume<std::uint8_t> sampleFieldU8(const Field& field, const Dims3& dims);
 
 // The trilinear interpolant of `volume` (values scaled by `scale`, e.g. 1/255 for uint8).
 // The volume must have at least 2 samples per axis. The field shares ownership of the data.

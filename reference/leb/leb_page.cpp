@@ -15,10 +15,17 @@ std::string pageName(const LebChannel& c, std::uint64_t page) {
 
 }  // namespace
 
+std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page) {
+  const std::uint64_t begin = page << pageBits, end = std::min(order.size(), (page + 1) << pageBits);
+  std::uint64_t n = 0;
+  for (HzCursor c(order, begin); c.index() < end; c.next()) n += insideVolume(c.point(), dims);
+  return n;
+}
+
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
   const std::string_view bytes = s.page(c, page);
   const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[page]);
-  if (crc32(bytes) != c.pageCrc[page]) throw StreamError(offset, pageName(c, page) + ": CRC-32 mismatch (the page is corrupt)");
+  if (!crc32Matches(bytes, c.pageCrc[page])) throw StreamError(offset, pageName(c, page) + ": CRC-32 mismatch (the page is corrupt)");
   return Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page));
 }
 

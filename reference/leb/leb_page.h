@@ -14,6 +14,9 @@ namespace voxref::ref {
 
 inline bool insideVolume(const GridPoint& p, const Dims3& d) { return p[0] < d[0] && p[1] < d[1] && p[2] < d[2]; }
 
+// How many of the page's points lie inside the volume (a walk over the page's indices).
+std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page);
+
 // Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
 // a reader of its deltas; the page holds one delta per component of each point inside the volume.
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);

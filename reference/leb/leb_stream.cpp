@@ -78,7 +78,7 @@ LebStream parseLebStream(std::string bytes) {
   // Section 1: header.
   if (r.take(4, "magic") != std::string_view("VXLB", 4)) r.fail(0, "magic: expected 'VXLB' (not an LEB stream)");
   r.need(kLebHeaderBytes - 4, "header");
-  if (crc32(b.substr(0, 32)) != static_cast<std::uint32_t>(loadLe(b.data() + 32, 4))) r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
+  if (!crc32Matches(b.substr(0, 32), static_cast<std::uint32_t>(loadLe(b.data() + 32, 4)))) r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
   r.le<std::uint16_t>("version", 1, 1);
   const std::size_t bitsAt = r.offset();
   s.sampleBits = r.le<std::uint8_t>("sample_bits");
@@ -133,10 +133,16 @@ LebStream parseLebStream(std::string bytes) {
     }
     if (c.pageOffset.back() != payload)
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " + std::to_string(c.pageOffset.back()));
+    // Every delta costs at least one bit (no code is shorter), so a stream too short for its
+    // volume is refused here, before a decoder allocates anything for that volume.
+    const std::uint64_t deltas = static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
+    if (payload < (deltas + 7) / 8)
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " + std::to_string(deltas) + " deltas of a " +
+                            dimsText(s.dims) + " volume (at least one bit each)");
     c.pageCrc.resize(static_cast<std::size_t>(pages));
     for (std::uint64_t i = 0; i < pages; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
     const std::size_t crcAt = r.offset();
-    if (crc32(b.substr(c.descriptorOffset, crcAt - c.descriptorOffset)) != r.le<std::uint32_t>("descriptor crc"))
+    if (!crc32Matches(b.substr(c.descriptorOffset, crcAt - c.descriptorOffset), r.le<std::uint32_t>("descriptor crc")))
       r.fail(crcAt, "descriptor crc: CRC-32 mismatch (channel " + std::to_string(ci) + "'s descriptor is corrupt)");
     c.descriptorBytes = r.offset() - c.descriptorOffset;
     c.payloadOffset = r.offset();

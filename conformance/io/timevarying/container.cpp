@@ -126,7 +126,7 @@ TimeVaryingFile parse(std::string_view b) {
     r.fail(r.offset(), "the header describes " + std::to_string(expectedTotal) + " bytes in all, the file has " + std::to_string(b.size()) +
                            (b.size() < expectedTotal ? " (truncated)" : " (trailing bytes)"));
   const auto stored = static_cast<std::uint32_t>(ref::loadLe(b.data() + b.size() - 4, 4));
-  if (ref::crc32(b.substr(0, b.size() - 4)) != stored) r.fail(b.size() - 4, "trailer: CRC-32 mismatch (the file is corrupt)");
+  if (!ref::crc32Matches(b.substr(0, b.size() - 4), stored)) r.fail(b.size() - 4, "trailer: CRC-32 mismatch (the file is corrupt)");
 
   ref::IndexTexture& index = f.textures.index;
   index.dims = {static_cast<int>(indexSide), static_cast<int>(indexSide), static_cast<int>(indexSide)};

@@ -204,6 +204,23 @@ TEST_F(LebCorrupt, OversizedClaimsAreRefusedBeforeAllocating) {
   EXPECT_NE(e.find("page_count: expected"), std::string::npos) << e;
 }
 
+TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {
+  // A 5x1x1 constant volume (grid 5^3) whose header then claims 5x5x5: 125 deltas cannot fit in
+  // the few bytes of payload, whatever the code.
+  LebEncodeOptions o;
+  o.gradients = false;
+  std::string b = encodeLeb(Volume<std::uint16_t>({5, 1, 1}, 9), 8, o);
+  for (int at : {12, 16}) b[static_cast<std::size_t>(at)] = 5;
+  const std::uint32_t c = crc32(std::string_view(b).substr(0, 32));
+  for (int i = 0; i < 4; ++i) b[32 + static_cast<std::size_t>(i)] = static_cast<char>((c >> (8 * i)) & 0xff);
+  try {
+    parseLebStream(b);
+    FAIL();
+  } catch (const StreamError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot hold the 125 deltas of a 5x5x5 volume (at least one bit each)"), std::string::npos) << e.what();
+  }
+}
+
 TEST_F(LebCorrupt, APageLengthPastTheEnd) {
   std::string b = bytes;
   const LebChannel& c = layout.channels[0];

@@ -1,0 +1,46 @@
+#include "conformance/bench/baselines.h"
+
+#include <lzma.h>
+#include <zstd.h>
+
+#include <stdexcept>
+
+namespace voxref::conf {
+
+BaselineResult zstdBaseline(std::string_view raw, int level) {
+  BaselineResult r{"zstd -" + std::to_string(level), 0, {}, {}};
+  std::string packed(ZSTD_compressBound(raw.size()), '\0');
+  std::size_t size = 0;
+  r.compress = measureOnce([&] { size = ZSTD_compress(packed.data(), packed.size(), raw.data(), raw.size(), level); });
+  if (ZSTD_isError(size)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(size));
+  r.bytes = size;
+  std::string back(raw.size(), '\0');
+  std::size_t got = 0;
+  r.decompress = measureOnce([&] { got = ZSTD_decompress(back.data(), back.size(), packed.data(), size); });
+  if (ZSTD_isError(got) || got != raw.size() || back != raw) throw std::runtime_error("zstd: the round trip lost data");
+  return r;
+}
+
+BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset) {
+  BaselineResult r{"xz -" + std::to_string(preset), 0, {}, {}};
+  std::string packed(lzma_stream_buffer_bound(raw.size()), '\0');
+  std::size_t size = 0;
+  lzma_ret ret = LZMA_OK;
+  r.compress = measureOnce([&] {
+    ret = lzma_easy_buffer_encode(preset, LZMA_CHECK_CRC64, nullptr, reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size(),
+                                  reinterpret_cast<std::uint8_t*>(packed.data()), &size, packed.size());
+  });
+  if (ret != LZMA_OK) throw std::runtime_error("xz: compression failed (" + std::to_string(static_cast<int>(ret)) + ")");
+  r.bytes = size;
+  std::string back(raw.size(), '\0');
+  std::size_t inPos = 0, outPos = 0;
+  std::uint64_t memlimit = UINT64_MAX;
+  r.decompress = measureOnce([&] {
+    ret = lzma_stream_buffer_decode(&memlimit, 0, nullptr, reinterpret_cast<const std::uint8_t*>(packed.data()), &inPos, size,
+                                    reinterpret_cast<std::uint8_t*>(back.data()), &outPos, back.size());
+  });
+  if (ret != LZMA_OK || outPos != raw.size() || back != raw) throw std::runtime_error("xz: the round trip lost data");
+  return r;
+}
+
+}  // namespace voxref::conf

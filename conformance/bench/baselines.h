@@ -1,0 +1,27 @@
+// General-purpose compressors as baselines of the codecs' figures: the same bytes, the same run.
+// Each baseline compresses, decompresses and checks that it got the bytes back (a baseline that
+// lost data would make a ratio meaningless); a mismatch or a library error throws.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+
+#include "conformance/bench/bench.h"
+
+namespace voxref::conf {
+
+struct BaselineResult {
+  std::string codec;  // "zstd -19", "xz -6"
+  std::size_t bytes = 0;
+  Timing compress, decompress;
+  double ratio(std::size_t raw) const { return static_cast<double>(raw) / static_cast<double>(bytes); }
+};
+
+// zstd at `level` (one frame, one thread: libzstd's single-threaded API).
+BaselineResult zstdBaseline(std::string_view raw, int level);
+// xz (liblzma's .xz container, CRC64) at `preset` (0..9).
+BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset);
+
+}  // namespace voxref::conf

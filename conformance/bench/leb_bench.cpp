@@ -1,0 +1,376 @@
+#include "conformance/bench/leb_bench.h"
+
+#include <chrono>
+#include <memory>
+#include <random>
+#include <stdexcept>
+
+#include "conformance/bench/baselines.h"
+#include "conformance/catalog.h"
+#include "conformance/io/raw_volume.h"
+#include "conformance/progress.h"
+#include "reference/common/fields.h"
+#include "reference/common/parallel.h"
+#include "reference/leb/gradients.h"
+#include "reference/leb/leb_codec.h"
+#include "reference/leb/leb_page.h"
+#include "reference/leb/leb_reader.h"
+
+namespace voxref::conf {
+namespace {
+
+struct LebDataset {
+  std::string name;
+  std::string missing;  // why the data set could not be made (a file is missing)
+  ref::Volume<std::uint16_t> volume;
+  int bits = 8;
+  std::string paper[3];  // Table 1: Data+G, Data, Grad
+};
+
+ref::Volume<std::uint16_t> widen(const ref::Volume<std::uint8_t>& v) {
+  return ref::Volume<std::uint16_t>(v.dims(), std::vector<std::uint16_t>(v.data().begin(), v.data().end()));
+}
+
+// The paper's resampling of the engine to 256^3 ("resampled to 256^3 with the cell aspect ratios
+// appropriately adjusted at runtime"), as voxref makes it: the original slices at even z, and at
+// odd z the rounded-down mean of the slices around (the last slice repeated). The inserted slices
+// are exactly what the split-edge predictor predicts along z, which is why this volume compresses
+// better than the one as stored.
+ref::Volume<std::uint8_t> doubleSlices(const ref::Volume<std::uint8_t>& v) {
+  const ref::Dims3 d = v.dims();
+  ref::Volume<std::uint8_t> out({d[0], d[1], 2 * d[2]});
+  for (int z = 0; z < 2 * d[2]; ++z)
+    for (int y = 0; y < d[1]; ++y)
+      for (int x = 0; x < d[0]; ++x) {
+        const int lo = z / 2, hi = std::min(lo + 1, d[2] - 1);
+        out.at(x, y, z) = z % 2 == 0 ? v.at(x, y, lo) : static_cast<std::uint8_t>((v.at(x, y, lo) + v.at(x, y, hi)) / 2);
+      }
+  return out;
+}
+
+LebDataset shared(const BenchOptions& o, const std::string& name, const std::string& file, const ref::Dims3& dims, bool doubled = false) {
+  LebDataset d;
+  d.name = name;
+  const std::filesystem::path path = benchVolumes(o) / file;
+  if (!std::filesystem::exists(path)) {
+    d.missing = path.string() + " is missing (give the folder with --volumes)";
+    return d;
+  }
+  const ref::Volume<std::uint8_t> v = io::readRawVolumeU8(path, dims);
+  d.volume = widen(doubled ? doubleSlices(v) : v);
+  return d;
+}
+
+LebDataset buckyball(int side) {
+  LebDataset d;
+  d.name = "Gaussian buckyball " + std::to_string(side) + "^3 (synthetic)";
+  d.volume = widen(ref::sampleFieldU8(ref::analyticField("gaussian_buckyball"), {side, side, side}));
+  return d;
+}
+
+std::vector<LebDataset> datasets(const BenchOptions& o) {
+  std::vector<LebDataset> v;
+  if (o.quick) {
+    v.push_back(shared(o, "nucleon 41^3", "nucleon_41x41x41_uint8.raw.gz", {41, 41, 41}));
+    v.push_back(buckyball(48));
+    return v;
+  }
+  v.push_back(shared(o, "engine 256x256x128 (as stored)", "engine_256x256x128_uint8.raw.gz", {256, 256, 128}));
+  v.push_back(shared(o, "engine 256^3 (slices doubled, as the paper)", "engine_256x256x128_uint8.raw.gz", {256, 256, 128}, true));
+  v.back().paper[0] = "2.6";
+  v.back().paper[1] = "4.35";
+  v.back().paper[2] = "2.22";
+  v.push_back(shared(o, "hydrogen_atom 128^3", "hydrogen_atom_128x128x128_uint8.raw.gz", {128, 128, 128}));
+  v.push_back(buckyball(256));
+  v.back().paper[0] = "3.071 (1024^3)";
+  v.back().paper[1] = "5.51";
+  v.back().paper[2] = "2.6";
+  return v;
+}
+
+std::string dataBytes(const ref::Volume<std::uint16_t>& v, int bits) {
+  std::string b;
+  b.reserve(v.data().size() * static_cast<std::size_t>(bits / 8));
+  for (std::uint16_t s : v.data()) {
+    b.push_back(static_cast<char>(s & 0xff));
+    if (bits == 16) b.push_back(static_cast<char>(s >> 8));
+  }
+  return b;
+}
+
+std::string gradientBytes(const ref::Volume<std::uint16_t>& v) {
+  const std::vector<std::int8_t> g = ref::quantizedGradients(v);
+  return std::string(reinterpret_cast<const char*>(g.data()), g.size());
+}
+
+// Deltas as `bits`-bit two's complement values, little endian: what a general-purpose coder gets
+// in place of the lead-1 coder.
+std::string deltaBytes(const std::vector<std::int32_t>& deltas, int bits) {
+  std::string b;
+  b.reserve(deltas.size() * static_cast<std::size_t>(bits / 8));
+  for (std::int32_t d : deltas) {
+    b.push_back(static_cast<char>(d & 0xff));
+    if (bits == 16) b.push_back(static_cast<char>((d >> 8) & 0xff));
+  }
+  return b;
+}
+
+std::string ratio(double r) { return formatNumber("%.3f:1", r); }
+std::string mbps(double bytes, double seconds) { return formatNumber("%.1f", bytes / 1e6 / seconds); }
+
+struct Encoded {
+  std::shared_ptr<const ref::LebStream> stream;
+  Timing encode, decode;
+};
+
+Encoded encodeAndCheck(const LebDataset& d, int pageBits, int threads) {
+  Encoded e;
+  std::string bytes;
+  e.encode = measureOnce([&] { bytes = ref::encodeLeb(d.volume, d.bits, {pageBits, true, threads}); });
+  e.stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(std::move(bytes)));
+  ref::LebDecoded back;
+  e.decode = measureOnce([&] { back = ref::decodeLeb(*e.stream, threads); });
+  if (back.data.data() != d.volume.data()) throw std::runtime_error("LEB round trip of " + d.name + " is not lossless");
+  return e;
+}
+
+// --- Table 1 ----------------------------------------------------------------------------------
+
+BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
+  BenchTable t;
+  t.id = "leb.table1";
+  t.title = "LEB compression, Table 1: lossless ratios of data, gradients and both, with general-purpose baselines on the same bytes";
+  t.columns = {"data set", "codec", "data + gradients", "data", "gradients", "compressed bytes", "encode MB/s", "decode MB/s",
+               "paper: Data+G / Data / Grad"};
+  Progress progress("voxref bench leb.table1", static_cast<long>(sets.size()));
+  long done = 0;
+  for (const LebDataset& d : sets) {
+    progress.update(done++, d.name);
+    if (!d.missing.empty()) {
+      t.rows.push_back({d.name, "not run: " + d.missing, "", "", "", "", "", "", ""});
+      continue;
+    }
+    const std::string raw = dataBytes(d.volume, d.bits), grad = gradientBytes(d.volume);
+    const double rawAll = static_cast<double>(raw.size() + grad.size());
+    const std::string paper = d.paper[0].empty() ? "" : d.paper[0] + " / " + d.paper[1] + " / " + d.paper[2];
+    nlohmann::json row = {{"data_set", d.name}, {"raw_data_bytes", raw.size()}, {"raw_gradient_bytes", grad.size()}, {"codecs", nlohmann::json::array()}};
+
+    const Encoded e = encodeAndCheck(d, 12, o.threads);
+    const ref::LebStats st = ref::lebStats(*e.stream);
+    t.rows.push_back({d.name, "LEB lead-1 (pages of 2^12)", ratio(st.ratio()), ratio(st.channelRatio(ref::LebChannelKind::Data)),
+                      ratio(st.channelRatio(ref::LebChannelKind::Gradients)), std::to_string(st.streamBytes), mbps(rawAll, e.encode.median),
+                      mbps(rawAll, e.decode.median), paper});
+    row["codecs"].push_back({{"codec", "leb"}, {"bytes", st.streamBytes}, {"data_ratio", st.channelRatio(ref::LebChannelKind::Data)},
+                             {"gradient_ratio", st.channelRatio(ref::LebChannelKind::Gradients)}, {"ratio", st.ratio()},
+                             {"encode", toJson(e.encode)}, {"decode", toJson(e.decode)}});
+
+    // The same prediction, coded by zstd instead of lead-1 Huffman: separates predictor and coder.
+    std::string dDeltas, gDeltas;
+    const Timing predict = measureOnce([&] {
+      dDeltas = deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Data), d.bits);
+      gDeltas = deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Gradients), 8);
+    });
+    {
+      const BaselineResult zd = zstdBaseline(dDeltas, 19), zg = zstdBaseline(gDeltas, 19);
+      const double bytes = static_cast<double>(zd.bytes + zg.bytes);
+      t.rows.push_back({d.name, "LEB prediction + zstd -19", ratio(rawAll / bytes), ratio(zd.ratio(raw.size())), ratio(zg.ratio(grad.size())),
+                        std::to_string(zd.bytes + zg.bytes), mbps(rawAll, predict.median + zd.compress.median + zg.compress.median), "-", ""});
+      row["codecs"].push_back({{"codec", "leb prediction + zstd -19"}, {"bytes", zd.bytes + zg.bytes}, {"predict", toJson(predict)}});
+    }
+    for (const std::string codec : {"zstd -3", "zstd -19", "xz -6"}) {
+      const bool xz = codec == "xz -6";
+      const int level = codec == "zstd -3" ? 3 : 19;
+      const BaselineResult bd = xz ? xzBaseline(raw, 6) : zstdBaseline(raw, level);
+      const BaselineResult bg = xz ? xzBaseline(grad, 6) : zstdBaseline(grad, level);
+      const double bytes = static_cast<double>(bd.bytes + bg.bytes);
+      t.rows.push_back({d.name, codec, ratio(rawAll / bytes), ratio(bd.ratio(raw.size())), ratio(bg.ratio(grad.size())), std::to_string(bd.bytes + bg.bytes),
+                        mbps(rawAll, bd.compress.median + bg.compress.median), mbps(rawAll, bd.decompress.median + bg.decompress.median), ""});
+      row["codecs"].push_back({{"codec", codec}, {"bytes", bd.bytes + bg.bytes}, {"data_bytes", bd.bytes}, {"gradient_bytes", bg.bytes},
+                               {"encode", toJson(bd.compress)}, {"decode", toJson(bd.decompress)}});
+    }
+    t.data["rows"].push_back(row);
+  }
+  progress.finish();
+  t.notes =
+      "Ratios are raw bytes over compressed bytes; raw = the volume's samples (1 or 2 bytes) and 3 bytes of quantized gradient per sample "
+      "(reference/leb/gradients.h: central differences, normalized, snorm8; the paper smoothed its gradients by diffusion first, voxref "
+      "does not, so its gradients are noisier). LEB counts the whole stream: header, code tables, page table and per-page CRC-32, payload; "
+      "padding to (2^k+1)^3 costs no payload and is not in the raw bytes. Data and gradients are coded as two channels with a code each "
+      "(the paper used one table for the four values). The baselines compress the data bytes and the gradient bytes separately (x fastest), "
+      "'LEB prediction + zstd -19' hands the same deltas the lead-1 coder codes to zstd. zstd and xz are not randomly accessible. "
+      "Decode MB/s: output bytes per second of the whole volume (data and gradients). Every codec's round trip is checked in the run.";
+  return t;
+}
+
+// --- Decode speeds ----------------------------------------------------------------------------
+
+struct PageSet {
+  const ref::LebChannel* channel;
+  std::vector<std::uint64_t> values;  // per page
+};
+
+// Decodes every page of both channels (the lead-1 decoder alone: the paper's "decompression
+// speed") on `threads` threads; returns the output bytes.
+double decodePagesOnly(const ref::LebStream& s, const std::vector<PageSet>& sets, int threads) {
+  double outBytes = 0.0;
+  for (const PageSet& p : sets) {
+    const int pages = static_cast<int>(p.values.size());
+    ref::parallelFor(pages, threads, [&](int i) {
+      std::vector<std::int32_t> out(static_cast<std::size_t>(p.values[static_cast<std::size_t>(i)]));
+      p.channel->decoder->decodePage(s.page(*p.channel, static_cast<std::uint64_t>(i)), out, 0, "page");
+    });
+    for (std::uint64_t v : p.values) outBytes += static_cast<double>(v) * (p.channel->valueBits / 8);
+  }
+  return outBytes;
+}
+
+std::vector<PageSet> pageSets(const ref::LebStream& s) {
+  const ref::HzOrder order(s.grid);
+  std::vector<PageSet> sets;
+  for (const ref::LebChannel& c : s.channels) {
+    PageSet p{&c, {}};
+    for (std::uint64_t i = 0; i < s.pageCount(); ++i)
+      p.values.push_back(ref::insidePointsOfPage(order, s.dims, s.pageBits, i) * static_cast<std::uint64_t>(c.components));
+    sets.push_back(std::move(p));
+  }
+  return sets;
+}
+
+struct RandomAccess {
+  double pointsPerSecond = 0.0;
+  double pageMissesPerPoint = 0.0;
+};
+
+// `threads` readers, each with its own cache of `budget` bytes, reconstruct the sample and the
+// gradient of random points (fixed seeds): up to `points` each, stopping after about two seconds.
+RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int threads, std::size_t budget, int points) {
+  std::vector<std::uint64_t> misses(static_cast<std::size_t>(threads), 0), done(static_cast<std::size_t>(threads), 0);
+  const Timing t = measureOnce([&] {
+    ref::parallelFor(threads, threads, [&](int worker) {
+      ref::LebReader reader(s, budget);
+      std::mt19937 rng(static_cast<unsigned>(1000 + worker));
+      std::uint64_t sink = 0;
+      const auto start = std::chrono::steady_clock::now();
+      int i = 0;
+      for (; i < points && (i % 256 != 0 || std::chrono::steady_clock::now() - start < std::chrono::seconds(2)); ++i) {
+        const ref::GridPoint p{static_cast<int>(rng() % static_cast<unsigned>(s->dims[0])), static_cast<int>(rng() % static_cast<unsigned>(s->dims[1])),
+                               static_cast<int>(rng() % static_cast<unsigned>(s->dims[2]))};
+        sink += reader.sample(p) + static_cast<std::uint64_t>(reader.gradient(p)[0] + 128);
+      }
+      misses[static_cast<std::size_t>(worker)] = reader.cacheStats().misses + (sink == 0 ? 0 : 0);
+      done[static_cast<std::size_t>(worker)] = static_cast<std::uint64_t>(i);
+    });
+  });
+  RandomAccess r;
+  std::uint64_t m = 0, n = 0;
+  for (std::size_t w = 0; w < misses.size(); ++w) {
+    m += misses[w];
+    n += done[w];
+  }
+  r.pointsPerSecond = static_cast<double>(n) / t.median;
+  r.pageMissesPerPoint = static_cast<double>(m) / static_cast<double>(n);
+  return r;
+}
+
+const LebDataset* firstAvailable(const std::vector<LebDataset>& sets) {
+  for (const LebDataset& d : sets)
+    if (d.missing.empty()) return &d;
+  return nullptr;
+}
+
+BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& sets) {
+  BenchTable t;
+  t.id = "leb.decode_speed";
+  const LebDataset* d = firstAvailable(sets);
+  t.title = "LEB decode speed: pages, whole volumes and random access" + (d ? " (" + d->name + ", pages of 2^12)" : std::string());
+  t.columns = {"what", "1 thread", "2 threads", "paper (2 GHz Pentium 4, 2004)"};
+  if (!d) {
+    t.notes = "not run: no data set available";
+    return t;
+  }
+  const Encoded e = encodeAndCheck(*d, 12, o.threads);
+  const std::vector<PageSet> ps = pageSets(*e.stream);
+  double out = 0.0;
+  const Timing p1 = measure([&] { out = decodePagesOnly(*e.stream, ps, 1); });
+  const Timing p2 = measure([&] { out = decodePagesOnly(*e.stream, ps, 2); });
+  t.rows.push_back({"page decompression (lead-1 decoding only), MB/s of deltas", mbps(out, p1.median), mbps(out, p2.median), "50-70 (10-110)"});
+  const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
+  const Timing w1 = measure([&] { (void)ref::decodeLeb(*e.stream, 1); });
+  const Timing w2 = measure([&] { (void)ref::decodeLeb(*e.stream, 2); });
+  t.rows.push_back({"whole volume (decompress and reconstruct), MB/s of data and gradients", mbps(volumeBytes, w1.median), mbps(volumeBytes, w2.median), ""});
+  const int points = o.quick ? 5000 : 200000;
+  for (std::size_t budget : {std::size_t{64} << 20, std::size_t{1} << 20}) {
+    const RandomAccess r1 = randomAccess(e.stream, 1, budget, points), r2 = randomAccess(e.stream, 2, budget, points);
+    const std::string what = "random points (sample and gradient), points/s, cache " + std::to_string(budget >> 20) + " MB";
+    t.rows.push_back({what, formatNumber("%.0f", r1.pointsPerSecond) + formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
+                      formatNumber("%.0f", r2.pointsPerSecond), budget > (1u << 20) ? "362K-3.32M points/s, 1.4-12.7 MB/s (during extraction)" : ""});
+    t.data["random_access"].push_back({{"budget_bytes", budget}, {"points_per_second_1", r1.pointsPerSecond}, {"points_per_second_2", r2.pointsPerSecond},
+                                       {"page_decodes_per_point", r1.pageMissesPerPoint}});
+  }
+  t.data["pages"] = {{"output_bytes", out}, {"one_thread", toJson(p1)}, {"two_threads", toJson(p2)}};
+  t.data["whole"] = {{"output_bytes", volumeBytes}, {"one_thread", toJson(w1)}, {"two_threads", toJson(w2)}};
+  t.notes = "Page decompression decodes every page of both channels with the lead-1 decoder (the deltas, 1 byte each for 8-bit data and "
+            "gradient components), as the paper measured it. The whole-volume decode adds the prediction walk over the (2^k+1)^3 grid. "
+            "Random points: each thread its own reader and page cache (reference/leb/leb_reader.h), points uniform in the volume, each "
+            "point's split-edge ancestors reconstructed recursively. The paper's reconstruction rates include disk loads during "
+            "isosurface extraction, so they bound the order of magnitude only.";
+  return t;
+}
+
+// --- Page size ---------------------------------------------------------------------------------
+
+BenchTable pageSize(const BenchOptions& o, const std::vector<LebDataset>& sets) {
+  BenchTable t;
+  t.id = "leb.page_size";
+  const LebDataset* d = firstAvailable(sets);
+  t.title = "LEB page size: what random access costs" + (d ? " (" + d->name + ")" : std::string());
+  t.columns = {"page points", "ratio (data + gradients)", "tables and page index", "page decode MB/s", "whole decode MB/s",
+               "random points/s (cache 16 MB)", "page decodes per point"};
+  if (!d) {
+    t.notes = "not run: no data set available";
+    return t;
+  }
+  const std::vector<int> bits = o.quick ? std::vector<int>{6, 8, 10} : std::vector<int>{8, 10, 12, 14, 16};
+  const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
+  Progress progress("voxref bench leb.page_size", static_cast<long>(bits.size()));
+  long done = 0;
+  for (int pb : bits) {
+    progress.update(done++, "2^" + std::to_string(pb));
+    const Encoded e = encodeAndCheck(*d, pb, o.threads);
+    const ref::LebStats st = ref::lebStats(*e.stream);
+    std::uint64_t tables = st.headerBytes;
+    for (const ref::LebChannelStats& c : st.channels) tables += c.descriptorBytes;
+    const std::vector<PageSet> ps = pageSets(*e.stream);
+    double out = 0.0;
+    const Timing p1 = measure([&] { out = decodePagesOnly(*e.stream, ps, 1); });
+    const RandomAccess r = randomAccess(e.stream, 1, std::size_t{16} << 20, o.quick ? 2000 : 100000);
+    t.rows.push_back({"2^" + std::to_string(pb), ratio(st.ratio()), formatNumber("%.2f %%", 100.0 * static_cast<double>(tables) / static_cast<double>(st.streamBytes)),
+                      mbps(out, p1.median), mbps(volumeBytes, e.decode.median), formatNumber("%.0f", r.pointsPerSecond),
+                      formatNumber("%.3f", r.pageMissesPerPoint)});
+    t.data["rows"].push_back({{"page_bits", pb}, {"ratio", st.ratio()}, {"table_bytes", tables}, {"stream_bytes", st.streamBytes},
+                              {"page_decode", toJson(p1)}, {"whole_decode", toJson(e.decode)}, {"points_per_second", r.pointsPerSecond}});
+  }
+  progress.finish();
+  t.notes = "Smaller pages cost ratio twice: each page restarts its context, and each adds 8 bytes to the page table (length and CRC-32). "
+            "Larger pages make every random point decode more deltas it does not need. Whole decode on " +
+            std::to_string(ref::workerCount(o.threads)) + " thread(s); page decode and random points on 1.";
+  return t;
+}
+
+}  // namespace
+
+std::vector<std::string> lebBenchIds() { return {"leb.table1", "leb.decode_speed", "leb.page_size"}; }
+
+std::vector<BenchTable> lebBench(const BenchOptions& o) {
+  std::vector<BenchTable> tables;
+  bool any = false;
+  for (const auto& id : lebBenchIds()) any |= globMatch(o.filter, id);
+  if (!any) return tables;
+  const std::vector<LebDataset> sets = datasets(o);
+  if (globMatch(o.filter, "leb.table1")) tables.push_back(table1(o, sets));
+  if (globMatch(o.filter, "leb.decode_speed")) tables.push_back(decodeSpeed(o, sets));
+  if (globMatch(o.filter, "leb.page_size")) tables.push_back(pageSize(o, sets));
+  return tables;
+}
+
+}  // namespace voxref::conf

@@ -1,0 +1,39 @@
+// Writes a seed corpus of valid LEB streams for the fuzz target: small volumes of each kind the
+// decoder handles (8 and 16 bits, with and without gradients, padded and not, tiny pages).
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <random>
+
+#include "reference/leb/leb_codec.h"
+
+int main(int argc, char** argv) {
+  using namespace voxref::ref;
+  if (argc != 2) {
+    std::cerr << "usage: make_leb_seeds DIR\n";
+    return 2;
+  }
+  const std::filesystem::path dir = argv[1];
+  std::filesystem::create_directories(dir);
+  auto write = [&](const std::string& name, const Volume<std::uint16_t>& v, int bits, int pageBits, bool gradients) {
+    LebEncodeOptions o;
+    o.pageBits = pageBits;
+    o.gradients = gradients;
+    std::ofstream(dir / name, std::ios::binary) << encodeLeb(v, bits, o);
+  };
+  std::mt19937 rng(1);
+  Volume<std::uint16_t> smooth({9, 7, 5}), noise({4, 4, 4}), wide({5, 5, 3});
+  for (int z = 0; z < 5; ++z)
+    for (int y = 0; y < 7; ++y)
+      for (int x = 0; x < 9; ++x) smooth.at(x, y, z) = static_cast<std::uint16_t>(128 + 100 * std::sin(0.5 * x + 0.3 * y - 0.2 * z));
+  for (auto& s : noise.data()) s = static_cast<std::uint16_t>(rng() & 255);
+  for (auto& s : wide.data()) s = static_cast<std::uint16_t>(rng() & 65535);
+  write("smooth_gradients.vxleb", smooth, 8, 4, true);
+  write("smooth_data_only.vxleb", smooth, 8, 6, false);
+  write("noise.vxleb", noise, 8, 4, true);
+  write("wide16.vxleb", wide, 16, 4, true);
+  write("constant.vxleb", Volume<std::uint16_t>({3, 3, 3}, 7), 8, 4, false);
+  write("single.vxleb", Volume<std::uint16_t>({1, 1, 1}, 200), 8, 4, true);
+  return 0;
+}
