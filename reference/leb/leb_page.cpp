@@ -29,14 +29,14 @@ Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t 
   return Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page));
 }
 
-std::vector<std::int32_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page) {
+std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page) {
   Lead1PageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
-  std::vector<std::int32_t> out((std::size_t{1} << s.pageBits) * comps, 0);
+  std::vector<std::int16_t> out((std::size_t{1} << s.pageBits) * comps, 0);
   const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
   for (HzCursor cur(order, begin); cur.index() < end; cur.next())
     if (insideVolume(cur.point(), s.dims))
-      for (std::size_t k = 0; k < comps; ++k) out[static_cast<std::size_t>(cur.index() - begin) * comps + k] = reader.next();
+      for (std::size_t k = 0; k < comps; ++k) out[static_cast<std::size_t>(cur.index() - begin) * comps + k] = static_cast<std::int16_t>(reader.next());
   reader.finish();
   return out;
 }

@@ -21,8 +21,8 @@ std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pa
 // a reader of its deltas; the page holds one delta per component of each point inside the volume.
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
 
-// The page's deltas placed at their positions: 2^pageBits x components entries, 0 for the padding
+// The page's deltas (each fits an int16) placed at their positions: 2^pageBits x components entries, 0 for the padding
 // and for indices past the grid's last point. Throws StreamError for a corrupt page.
-std::vector<std::int32_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page);
+std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page);
 
 }  // namespace voxref::ref

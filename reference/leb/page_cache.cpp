@@ -4,18 +4,18 @@
 
 namespace voxref::ref {
 
-PageCache::Page PageCache::get(std::uint64_t key, const std::function<std::vector<std::int32_t>()>& decode) {
+PageCache::Page PageCache::get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode) {
   if (const auto it = index_.find(key); it != index_.end()) {
     ++stats_.hits;
     lru_.splice(lru_.begin(), lru_, it->second);
     return it->second->page;
   }
   ++stats_.misses;
-  Page page = std::make_shared<const std::vector<std::int32_t>>(decode());
-  const std::size_t cost = page->size() * sizeof(std::int32_t);
+  Page page = std::make_shared<const std::vector<std::int16_t>>(decode());
+  const std::size_t cost = page->size() * sizeof(std::int16_t);
   if (cost > budget_) return page;
   while (stats_.bytes + cost > budget_ && !lru_.empty()) {
-    stats_.bytes -= lru_.back().page->size() * sizeof(std::int32_t);
+    stats_.bytes -= lru_.back().page->size() * sizeof(std::int16_t);
     index_.erase(lru_.back().key);
     lru_.pop_back();
     ++stats_.evictions;

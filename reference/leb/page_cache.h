@@ -1,7 +1,8 @@
 // A least-recently-used cache of decoded pages under a byte budget (Gregorski et al. 2004,
 // section 5: "the amount of main memory available for uncompressed data was limited").
 //
-// Keys are opaque 64-bit numbers; a page's cost is its decoded size in bytes. When an insertion
+// Keys are opaque 64-bit numbers; a page is its decoded deltas (every delta of 8- and 16-bit
+// samples fits an int16) and its cost is their size in bytes. When an insertion
 // takes the total over the budget, the least recently used pages are dropped until it fits; a
 // page larger than the whole budget is handed out but not kept (a budget of 0 caches nothing).
 // Pages are shared: a caller may keep one after it was evicted. Not thread-safe.
@@ -18,7 +19,7 @@ namespace voxref::ref {
 
 class PageCache {
  public:
-  using Page = std::shared_ptr<const std::vector<std::int32_t>>;
+  using Page = std::shared_ptr<const std::vector<std::int16_t>>;
   struct Stats {
     std::uint64_t hits = 0, misses = 0, evictions = 0;
     std::size_t bytes = 0, peakBytes = 0, pages = 0;
@@ -26,7 +27,7 @@ class PageCache {
 
   explicit PageCache(std::size_t budgetBytes) : budget_(budgetBytes) {}
   // The page under `key`, calling decode() on a miss.
-  Page get(std::uint64_t key, const std::function<std::vector<std::int32_t>()>& decode);
+  Page get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode);
   const Stats& stats() const { return stats_; }
   std::size_t budget() const { return budget_; }
 

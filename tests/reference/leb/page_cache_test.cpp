@@ -1,0 +1,57 @@
+#include "reference/leb/page_cache.h"
+
+#include <gtest/gtest.h>
+
+namespace voxref::ref {
+namespace {
+
+// A page of n int16 values costs 2n bytes.
+std::function<std::vector<std::int16_t>()> page(std::size_t n, int* decodes) {
+  return [n, decodes] {
+    ++*decodes;
+    return std::vector<std::int16_t>(n, 7);
+  };
+}
+
+TEST(PageCache, KeepsTheMostRecentlyUsedPagesWithinTheBudget) {
+  PageCache cache(3 * 200);  // three pages of 100 values
+  int decodes = 0;
+  cache.get(1, page(100, &decodes));
+  cache.get(2, page(100, &decodes));
+  cache.get(3, page(100, &decodes));
+  cache.get(1, page(100, &decodes));  // hit; 2 is now the least recently used
+  cache.get(4, page(100, &decodes));  // evicts 2
+  EXPECT_EQ(decodes, 4);
+  cache.get(1, page(100, &decodes));
+  cache.get(3, page(100, &decodes));
+  EXPECT_EQ(decodes, 4);
+  cache.get(2, page(100, &decodes));  // was evicted: decoded again
+  EXPECT_EQ(decodes, 5);
+  EXPECT_EQ(cache.stats().hits, 3u);
+  EXPECT_EQ(cache.stats().misses, 5u);
+  EXPECT_EQ(cache.stats().evictions, 2u);
+  EXPECT_LE(cache.stats().bytes, 600u);
+  EXPECT_EQ(cache.stats().peakBytes, 600u);
+}
+
+TEST(PageCache, APageLargerThanTheBudgetIsHandedOutButNotKept) {
+  PageCache cache(100);
+  int decodes = 0;
+  const auto p = cache.get(9, page(1000, &decodes));
+  EXPECT_EQ(p->size(), 1000u);
+  cache.get(9, page(1000, &decodes));
+  EXPECT_EQ(decodes, 2);
+  EXPECT_EQ(cache.stats().bytes, 0u);
+}
+
+TEST(PageCache, EvictedPagesStayValidForTheirHolders) {
+  PageCache cache(200);
+  int decodes = 0;
+  const auto held = cache.get(1, page(100, &decodes));
+  cache.get(2, page(100, &decodes));  // evicts 1
+  EXPECT_EQ(held->size(), 100u);
+  EXPECT_EQ((*held)[99], 7);
+}
+
+}  // namespace
+}  // namespace voxref::ref
