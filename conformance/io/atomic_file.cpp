@@ -1,5 +1,8 @@
 #include "conformance/io/atomic_file.h"
 
+#include <fstream>
+#include <sstream>
+
 #include <unistd.h>
 
 #include <cerrno>
@@ -47,6 +50,17 @@ void ensureDirectory(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
     throw IoError("cannot create directory " + dir.string() + (ec ? ": " + ec.message() : ""));
+}
+
+std::string readWholeFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path.string() + " does not exist");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError("cannot open " + path.string());
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  if (in.bad()) throw IoError("cannot read " + path.string());
+  return std::move(ss).str();
 }
 
 }  // namespace voxref::io

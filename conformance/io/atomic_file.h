@@ -42,6 +42,9 @@ class AtomicOutput {
 // Throws IoError naming the path (directory missing, disk full, permission).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
 
+// The whole content of a regular file; throws IoError "<path> does not exist" or "cannot open".
+std::string readWholeFile(const std::filesystem::path& path);
+
 // Creates the directory (and parents); throws IoError naming it.
 void ensureDirectory(const std::filesystem::path& dir);
 

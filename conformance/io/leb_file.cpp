@@ -8,14 +8,9 @@
 namespace voxref::io {
 
 ref::LebStream readLebFile(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path.string() + " does not exist");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open " + path.string());
-  std::ostringstream ss;
-  ss << in.rdbuf();
+  std::string bytes = readWholeFile(path);
   try {
-    return ref::parseLebStream(std::move(ss).str());
+    return ref::parseLebStream(std::move(bytes));
   } catch (const ref::StreamError& e) {
     throw FormatError(path.string() + ": " + e.what());
   }

@@ -179,13 +179,7 @@ TimeVaryingFile parseTimeVarying(std::string_view b, const std::string& name) {
 void writeTimeVarying(const std::filesystem::path& path, const TimeVaryingFile& file) { writeFileAtomically(path, serializeTimeVarying(file)); }
 
 TimeVaryingFile readTimeVarying(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path.string() + " does not exist");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open " + path.string());
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parseTimeVarying(ss.str(), path.string());
+  return parseTimeVarying(readWholeFile(path), path.string());
 }
 
 }  // namespace voxref::io
