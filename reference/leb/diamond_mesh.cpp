@@ -85,25 +85,17 @@ void DiamondMesh::merge(const GridPoint& d) {
   split_.erase(grid_.linearIndex(d));
 }
 
+std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m) {
+  const auto [i, j] = longestEdge(t);
+  Tetrahedron a = t, b = t;
+  a.v[static_cast<std::size_t>(j)] = m;  // keeps v[i]
+  b.v[static_cast<std::size_t>(i)] = m;  // keeps v[j]
+  return {a, b};
+}
+
 std::vector<Tetrahedron> DiamondMesh::leafTetrahedra() const {
   std::vector<Tetrahedron> leaves;
-  std::vector<Tetrahedron> stack;
-  for (const Tetrahedron& t : rootTetrahedra(grid_)) stack.push_back(t);
-  while (!stack.empty()) {
-    const Tetrahedron t = stack.back();
-    stack.pop_back();
-    GridPoint m;
-    if (!tetrahedronSplitVertex(t, m) || !isSplit(m)) {
-      leaves.push_back(t);
-      continue;
-    }
-    const auto [i, j] = longestEdge(t);
-    Tetrahedron a = t, b = t;
-    a.v[static_cast<std::size_t>(j)] = m;  // keeps v[i]
-    b.v[static_cast<std::size_t>(i)] = m;  // keeps v[j]
-    stack.push_back(a);
-    stack.push_back(b);
-  }
+  forEachLeaf([&](const Tetrahedron& t, const GridPoint&) { leaves.push_back(t); });
   return leaves;
 }
 

@@ -44,10 +44,41 @@ class DiamondMesh {
 
   // The leaf tetrahedra of the current mesh.
   std::vector<Tetrahedron> leafTetrahedra() const;
+  // Visits every leaf tetrahedron with the diamond it belongs to: its split vertex's diamond (which
+  // is then a leaf diamond, in the split queue), or for a finest-level tetrahedron (no split
+  // vertex) the diamond whose split created it; {-1, -1, -1} only for the root tetrahedra of a
+  // grid with k = 0. The order is deterministic (that of leafTetrahedra).
+  template <class Fn>
+  void forEachLeaf(Fn&& fn) const;
 
  private:
   LebGrid grid_;
   std::unordered_set<std::uint64_t> split_;
 };
+
+// The two halves of t cut at the midpoint m of its longest edge (first keeps the edge's first
+// endpoint).
+std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m);
+
+template <class Fn>
+void DiamondMesh::forEachLeaf(Fn&& fn) const {
+  struct Item {
+    Tetrahedron t;
+    GridPoint creator;
+  };
+  std::vector<Item> stack;
+  for (const Tetrahedron& t : rootTetrahedra(grid_)) stack.push_back({t, {-1, -1, -1}});
+  while (!stack.empty()) {
+    const Item item = stack.back();
+    stack.pop_back();
+    GridPoint m;
+    const bool hasSplitVertex = tetrahedronSplitVertex(item.t, m);
+    if (!hasSplitVertex || !isSplit(m)) {
+      fn(item.t, hasSplitVertex ? m : item.creator);
+      continue;
+    }
+    for (const Tetrahedron& half : bisectTetrahedron(item.t, m)) stack.push_back({half, m});
+  }
+}
 
 }  // namespace voxref::ref

@@ -1,0 +1,85 @@
+// The scalar field an isosurface is extracted from: the values and quantized gradients at every
+// point of an LEB grid (reference/leb/leb_grid.h), read either from an uncompressed array or from
+// the compressed stream through the page cache (Gregorski et al. 2004, section 4: "the data is
+// decompressed on demand as the mesh is refined").
+//
+// The field on the grid is the volume extended to (2^k + 1)^3 points by the LEB codec's padding
+// rule (reference/leb/prediction.h: a padding point takes its prediction, the floor mean of its
+// split-edge endpoints; root corners outside the volume are 0), so both sources give the same
+// value at every grid point, bit for bit. Surfaces are clipped to the volume's box
+// [0, X-1] x [0, Y-1] x [0, Z-1] by the extraction, so the padding never shows.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "reference/common/volume.h"
+#include "reference/leb/leb_grid.h"
+#include "reference/leb/leb_reader.h"
+
+namespace voxref::ref {
+
+class GridField {
+ public:
+  virtual ~GridField() = default;
+  virtual const LebGrid& grid() const = 0;
+  virtual const Dims3& volumeDims() const = 0;
+  virtual std::uint16_t value(const GridPoint& p) = 0;
+  // The stored gradient, snorm8 per component (reference/leb/gradients.h).
+  virtual std::array<std::int8_t, 3> gradient(const GridPoint& p) = 0;
+};
+
+// The volume (and its quantized gradients) extended to the grid, held uncompressed: 2 + 3 bytes
+// per grid point. Throws std::invalid_argument for gradients of the wrong size.
+class DenseGridField final : public GridField {
+ public:
+  DenseGridField(const Volume<std::uint16_t>& volume, const std::vector<std::int8_t>& gradients);
+  const LebGrid& grid() const override { return grid_; }
+  const Dims3& volumeDims() const override { return dims_; }
+  std::uint16_t value(const GridPoint& p) override { return values_[grid_.linearIndex(p)]; }
+  std::array<std::int8_t, 3> gradient(const GridPoint& p) override;
+  const std::vector<std::uint16_t>& values() const { return values_; }
+
+ private:
+  LebGrid grid_;
+  Dims3 dims_;
+  std::vector<std::uint16_t> values_;   // linearIndex order
+  std::vector<std::int8_t> gradients_;  // 3 per point, linearIndex order
+};
+
+// The field read from a compressed stream with a gradients channel: every value comes from
+// LebReader (pages decoded on demand, kept in its LRU cache). Values already asked for are kept in
+// a point cache of at most `pointCacheEntries` entries (cleared when full), since extraction asks
+// for every mesh vertex several times. Throws std::invalid_argument for a stream without
+// gradients.
+class CompressedGridField final : public GridField {
+ public:
+  CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes, std::size_t pointCacheEntries = 1u << 22);
+  const LebGrid& grid() const override { return grid_; }
+  const Dims3& volumeDims() const override { return dims_; }
+  std::uint16_t value(const GridPoint& p) override;
+  std::array<std::int8_t, 3> gradient(const GridPoint& p) override;
+  const LebReader& reader() const { return reader_; }
+
+ private:
+  struct Entry {
+    std::uint16_t value;
+    std::array<std::int8_t, 3> gradient;
+  };
+  const Entry& entry(const GridPoint& p);
+  LebGrid grid_;
+  Dims3 dims_;
+  LebReader reader_;
+  std::size_t pointCacheEntries_;
+  std::unordered_map<std::uint64_t, Entry> points_;
+};
+
+// The gradient as a unit-free vector (components / 127).
+inline glm::dvec3 gradientVector(const std::array<std::int8_t, 3>& g) { return glm::dvec3(g[0], g[1], g[2]) / 127.0; }
+
+}  // namespace voxref::ref
