@@ -4,12 +4,14 @@ cmake_minimum_required(VERSION 3.25)
 #   reference/   includes only reference/ (and the standard library, GLM)
 #   emulation/   includes reference/ and emulation/
 #   gpu/         includes reference/ and gpu/, never emulation/
+#   fixtures/    includes reference/ and fixtures/ (and Embree), never emulation/, gpu/, GL or file formats
 #   conformance/ anything
 # SOURCE_DIR: the repository root.
 set(rules
   "reference|emulation/|gpu/|conformance/|GL/|EGL/|OpenEXR|OpenImageIO|nlohmann|CLI/"
   "emulation|gpu/|conformance/|GL/|EGL/|OpenEXR|OpenImageIO|nlohmann|CLI/"
-  "gpu|emulation/|conformance/|OpenEXR|OpenImageIO|nlohmann|CLI/")
+  "gpu|emulation/|conformance/|OpenEXR|OpenImageIO|nlohmann|CLI/"
+  "fixtures|emulation/|gpu/|conformance/|GL/|EGL/|OpenEXR|OpenImageIO|nlohmann|CLI/")
 set(violations "")
 foreach(rule IN LISTS rules)
   string(REPLACE "|" ";" parts "${rule}")
@@ -32,4 +34,4 @@ if(violations)
   string(REPLACE ";" "\n" text "${violations}")
   message(FATAL_ERROR "layering violations:\n${text}")
 endif()
-message("layering: reference, emulation and gpu include only what DESIGN.md allows")
+message("layering: reference, emulation, gpu and fixtures include only what DESIGN.md allows")

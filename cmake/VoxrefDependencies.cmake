@@ -15,5 +15,6 @@ find_package(nlohmann_json 3 REQUIRED)          # nlohmann-json3-dev
 find_package(ZLIB REQUIRED)                     # zlib1g-dev (gzip-compressed raw volumes)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)  # libzstd-dev: a general-purpose baseline of the benchmarks
 pkg_check_modules(LZMA REQUIRED IMPORTED_TARGET liblzma)  # liblzma-dev: xz, another baseline
+find_package(OpenSSL REQUIRED)                  # libssl-dev: SHA-256 of the fixture manifest (libcrypto)
 find_package(Threads REQUIRED)
 find_package(GTest REQUIRED)                    # libgtest-dev

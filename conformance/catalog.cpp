@@ -2,6 +2,7 @@
 
 #include <fnmatch.h>
 
+#include "conformance/iso/iso_catalog.h"
 #include "conformance/sparsegrid/sparsegrid_catalog.h"
 #include "conformance/timevarying/timevarying_catalog.h"
 
@@ -10,6 +11,7 @@ namespace voxref::conf {
 std::vector<Case> allCases() {
   std::vector<Case> cases = sparseGridCases();
   for (Case& c : timeVaryingCases()) cases.push_back(std::move(c));
+  for (Case& c : isoCases()) cases.push_back(std::move(c));
   return cases;
 }
 

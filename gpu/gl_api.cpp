@@ -69,6 +69,25 @@ GlApi loadGlApi(const GetProcAddress& get) {
   load(get, gl.DeleteVertexArrays, "glDeleteVertexArrays");
   load(get, gl.BindVertexArray, "glBindVertexArray");
   load(get, gl.DrawArrays, "glDrawArrays");
+  load(get, gl.GenBuffers, "glGenBuffers");
+  load(get, gl.DeleteBuffers, "glDeleteBuffers");
+  load(get, gl.BindBuffer, "glBindBuffer");
+  load(get, gl.BufferData, "glBufferData");
+  load(get, gl.VertexAttribPointer, "glVertexAttribPointer");
+  load(get, gl.EnableVertexAttribArray, "glEnableVertexAttribArray");
+  load(get, gl.DrawElements, "glDrawElements");
+  load(get, gl.UniformMatrix4fv, "glUniformMatrix4fv");
+  load(get, gl.DepthFunc, "glDepthFunc");
+  load(get, gl.DepthMask, "glDepthMask");
+  load(get, gl.ColorMask, "glColorMask");
+  load(get, gl.ClearDepth, "glClearDepth");
+  load(get, gl.GenQueries, "glGenQueries");
+  load(get, gl.DeleteQueries, "glDeleteQueries");
+  load(get, gl.BeginQuery, "glBeginQuery");
+  load(get, gl.EndQuery, "glEndQuery");
+  load(get, gl.GetQueryObjectuiv, "glGetQueryObjectuiv");
+  load(get, gl.ClearBufferfv, "glClearBufferfv");
+  load(get, gl.ClearBufferuiv, "glClearBufferuiv");
   return gl;
 }
 

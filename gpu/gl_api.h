@@ -73,6 +73,26 @@ struct GlApi {
   PFNGLDELETEVERTEXARRAYSPROC DeleteVertexArrays = nullptr;
   PFNGLBINDVERTEXARRAYPROC BindVertexArray = nullptr;
   PFNGLDRAWARRAYSPROC DrawArrays = nullptr;
+  // Meshes, depth and occlusion queries (the isosurface renderer).
+  PFNGLGENBUFFERSPROC GenBuffers = nullptr;
+  PFNGLDELETEBUFFERSPROC DeleteBuffers = nullptr;
+  PFNGLBINDBUFFERPROC BindBuffer = nullptr;
+  PFNGLBUFFERDATAPROC BufferData = nullptr;
+  PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer = nullptr;
+  PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray = nullptr;
+  PFNGLDRAWELEMENTSPROC DrawElements = nullptr;
+  PFNGLUNIFORMMATRIX4FVPROC UniformMatrix4fv = nullptr;
+  PFNGLDEPTHFUNCPROC DepthFunc = nullptr;
+  PFNGLDEPTHMASKPROC DepthMask = nullptr;
+  PFNGLCOLORMASKPROC ColorMask = nullptr;
+  PFNGLCLEARDEPTHPROC ClearDepth = nullptr;
+  PFNGLGENQUERIESPROC GenQueries = nullptr;
+  PFNGLDELETEQUERIESPROC DeleteQueries = nullptr;
+  PFNGLBEGINQUERYPROC BeginQuery = nullptr;
+  PFNGLENDQUERYPROC EndQuery = nullptr;
+  PFNGLGETQUERYOBJECTUIVPROC GetQueryObjectuiv = nullptr;
+  PFNGLCLEARBUFFERFVPROC ClearBufferfv = nullptr;
+  PFNGLCLEARBUFFERUIVPROC ClearBufferuiv = nullptr;
 };
 
 // Throws GlUnavailable (gl_error.h) naming the first entry point the context does not provide.

@@ -76,4 +76,18 @@ struct InfoOptions {
 };
 int runInfo(const InfoOptions& o);
 
+struct FixturesOptions {
+  bool generate = false;  // else verify
+  std::filesystem::path dir;
+  std::string scene = "all";  // a built-in scene name, or all
+  int frames = 0;             // 0: the scene's own orbit length
+  std::filesystem::path volume;  // the user's volume instead of a built-in scene
+  std::vector<int> dims;
+  std::string type = "uint8";
+  double isovalue = 0.0;
+  bool isovalueSet = false;
+  int threads = 0;
+};
+int runFixtures(const FixturesOptions& o);
+
 }  // namespace voxref::cli

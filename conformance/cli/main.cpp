@@ -85,6 +85,24 @@ int main(int argc, char** argv) {
   infoCmd->add_option("--codec", info.codec, "timevarying or leb")->required();
   infoCmd->add_option("--input", info.input, "file to describe")->required();
 
+  FixturesOptions fixtures;
+  auto* fixturesCmd = app.add_subcommand("fixtures", "Embree ground truth of the isosurface scenes: generate, or verify bit for bit");
+  fixturesCmd->require_subcommand(1);
+  for (const bool generate : {true, false}) {
+    auto* sub = fixturesCmd->add_subcommand(generate ? "generate" : "verify",
+                                            generate ? "write EXR fixtures and a manifest with sha256 of every file" : "regenerate from the manifest and compare every file");
+    sub->add_option("--dir", fixtures.dir, "fixture directory (holds manifest.json)")->required();
+    sub->add_option("--threads", fixtures.threads, "CPU threads (0: all); results are the same for any count")->default_val(0);
+    if (!generate) continue;
+    sub->callback([&fixtures] { fixtures.generate = true; });
+    sub->add_option("--scene", fixtures.scene, "built-in scene (iso.frames.<scene>), or all")->default_val("all");
+    sub->add_option("--frames", fixtures.frames, "frames of the orbit (0: the scene's)")->default_val(0);
+    sub->add_option("--volume", fixtures.volume, "your raw volume (.raw or .raw.gz) instead of a built-in scene");
+    sub->add_option("--dims", fixtures.dims, "X Y Z of --volume")->expected(3);
+    sub->add_option("--type", fixtures.type, "voxel type of --volume: uint8 or uint16 (little endian)")->default_val("uint8");
+    sub->add_option("--isovalue", fixtures.isovalue, "isovalue for --volume (or to override the scene's)")->each([&fixtures](const std::string&) { fixtures.isovalueSet = true; });
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -101,6 +119,7 @@ int main(int argc, char** argv) {
     if (*encodeCmd) return runEncode(encode);
     if (*decodeCmd) return runDecode(decode);
     if (*infoCmd) return runInfo(info);
+    if (*fixturesCmd) return runFixtures(fixtures);
   } catch (const std::exception& e) {
     std::cerr << "voxref: " << e.what() << "\n";
     return 2;

@@ -27,7 +27,7 @@ void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
 void writeExr(const std::filesystem::path& path, int width, int height, const std::vector<ExrChannel>& channels,
               const std::map<std::string, std::string>& attributes) {
   for (const ExrChannel& c : channels)
-    if (c.data.size() != static_cast<std::size_t>(width) * height)
+    if ((c.uintData.empty() ? c.data.size() : c.uintData.size()) != static_cast<std::size_t>(width) * height)
       throw IoError("channel " + c.name + " for " + path.string() + " has the wrong number of pixels");
   AtomicOutput out(path);
   try {
@@ -35,6 +35,12 @@ void writeExr(const std::filesystem::path& path, int width, int height, const st
     for (const auto& [key, value] : attributes) header.insert(key, Imf::StringAttribute(value));
     Imf::FrameBuffer fb;
     for (const ExrChannel& c : channels) {
+      if (!c.uintData.empty()) {
+        header.channels().insert(c.name, Imf::Channel(Imf::UINT));
+        fb.insert(c.name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(const_cast<std::uint32_t*>(c.uintData.data())), sizeof(std::uint32_t),
+                                     sizeof(std::uint32_t) * static_cast<std::size_t>(width)));
+        continue;
+      }
       header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
       fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data.data())), sizeof(float),
                                    sizeof(float) * static_cast<std::size_t>(width)));

@@ -21,9 +21,11 @@ void writePng(const std::filesystem::path& path, const Rgb8Image& image);
 struct ExrChannel {
   std::string name;         // e.g. "Y", "Z", "R"
   std::vector<float> data;  // width * height, row 0 at the TOP
+  std::vector<std::uint32_t> uintData = {};  // instead of data: a 32-bit UINT channel (ids)
 };
 
-// A scanline EXR of 32-bit float channels, with string attributes (scene, backend, version).
+// A scanline EXR of 32-bit float (or UINT) channels, with string attributes (scene, backend,
+// version). ZIP compression; the bytes depend only on the inputs (no time stamps).
 void writeExr(const std::filesystem::path& path, int width, int height, const std::vector<ExrChannel>& channels,
               const std::map<std::string, std::string>& attributes);
 

@@ -1,0 +1,185 @@
+#include "conformance/iso/iso_catalog.h"
+
+#include <chrono>
+#include <cmath>
+
+#include "conformance/case_context.h"
+#include "conformance/iso/iso_session.h"
+#include "conformance/iso/mesh_image_compare.h"
+#include "fixtures/raycast/mesh_raycast.h"
+#include "fixtures/raycast/trilinear_isosurface.h"
+#include "reference/iso/diamond_bounds.h"
+#include "reference/iso/extraction.h"
+#include "reference/iso/grid_field.h"
+#include "reference/leb/gradients.h"
+
+namespace voxref::conf {
+namespace {
+
+CaseResult notRun(CaseResult r, const std::string& why) {
+  r.status = Status::Skip;
+  r.message = why;
+  return r;
+}
+
+// Occlusion and mesh-image oracles over every frame of a scene.
+CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::string& description, const IsoScene& scene, bool expectEmpty) {
+  CaseResult r;
+  r.id = id;
+  r.system = "iso";
+  r.description = description;
+  if (ctx.gl() == nullptr) return notRun(r, "no GL context");
+  IsoRunOptions options;
+  options.keepImages = true;
+  options.threads = ctx.threads();
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<IsoFrame> frames = runIsoFrames(*ctx.gl(), scene, options);
+  r.secondsGl = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  std::size_t falseCulls = 0, culledInvisible = 0, invisible = 0, tests = 0, triangles = 0;
+  std::size_t coverageFail = 0, depthFail = 0, visibilityFail = 0, otherAllowed = 0, same = 0;
+  double worstOverBound = 0.0, worstDepth = 0.0;
+  nlohmann::json perFrame = nlohmann::json::array();
+  for (const IsoFrame& f : frames) {
+    const MeshImageAgreement a = compareMeshImages(f.mesh, f.gl, f.truth, f.camera);
+    falseCulls += f.falseCulls;
+    culledInvisible += f.culledInvisible;
+    invisible += f.invisibleCandidates;
+    tests += f.occlusionTests;
+    triangles += f.triangles;
+    coverageFail += a.coverageFailures;
+    depthFail += a.depthFailures;
+    visibilityFail += a.visibilityFailures;
+    otherAllowed += a.otherTriangleAllowed;
+    same += a.sameTriangle;
+    worstOverBound = std::max(worstOverBound, a.maxDepthOverBound);
+    worstDepth = std::max(worstDepth, a.maxDepthDifference);
+    perFrame.push_back({{"frame", f.frame},
+                        {"isovalue", f.isovalue},
+                        {"splits", f.refinement.splits},
+                        {"merges", f.refinement.merges},
+                        {"split_queue", f.refinement.splitQueue},
+                        {"merge_queue", f.refinement.mergeQueue},
+                        {"occlusion_tests", f.occlusionTests},
+                        {"culled", f.culled},
+                        {"false_culls", f.falseCulls},
+                        {"visible_diamonds", f.visibleDiamonds},
+                        {"triangles", f.triangles},
+                        {"pages_decoded_total", f.pagesDecoded},
+                        {"same_triangle_pixels", a.sameTriangle},
+                        {"other_triangle_allowed", a.otherTriangleAllowed},
+                        {"coverage_failures", a.coverageFailures},
+                        {"depth_failures", a.depthFailures},
+                        {"visibility_failures", a.visibilityFailures},
+                        {"max_depth_difference", a.maxDepthDifference}});
+  }
+  r.figures["frames"] = perFrame;
+  r.figures["scene"] = {{"data", scene.data},
+                        {"dims", scene.dims},
+                        {"isovalue", scene.isovalue},
+                        {"frames", scene.path.frames},
+                        {"threshold_px", scene.budget.threshold},
+                        {"max_splits", scene.budget.maxSplits}};
+
+  const double efficiency = invisible == 0 ? 0.0 : static_cast<double>(culledInvisible) / invisible;
+  // The negative control inverts the expectation: a culler that culls everything it tests must be
+  // caught culling visible diamonds.
+  const bool occlusionOk = scene.cullEveryTested ? falseCulls > 0 : falseCulls == 0;
+  r.oracles.push_back({"occlusion", occlusionOk ? Verdict::Pass : Verdict::Fail,
+                       std::to_string(falseCulls) + " false culls over " + std::to_string(frames.size()) + " frames; " + std::to_string(tests) +
+                           " occlusion tests; culled " + std::to_string(culledInvisible) + " of " + std::to_string(invisible) +
+                           " invisible candidates (" + std::to_string(std::lround(100.0 * efficiency)) + " %)",
+                       {{"false_culls", falseCulls}, {"efficiency", efficiency}, {"tests", tests}}});
+  const bool imagesAgree = coverageFail == 0 && depthFail == 0 && visibilityFail == 0;
+  r.oracles.push_back({"mesh_image", imagesAgree ? Verdict::Pass : Verdict::Fail,
+                       std::to_string(coverageFail) + " coverage, " + std::to_string(depthFail) + " depth and " + std::to_string(visibilityFail) +
+                           " visibility failures; " + std::to_string(same) + " pixels show the same triangle, " + std::to_string(otherAllowed) +
+                           " another one within the snapping allowance; worst depth " + std::to_string(worstOverBound) + " of its allowance (" +
+                           std::to_string(worstDepth) + " grid units)",
+                       {{"coverage_failures", coverageFail}, {"depth_failures", depthFail}, {"visibility_failures", visibilityFail},
+                        {"same_triangle_pixels", same}, {"other_triangle_allowed", otherAllowed}}});
+  if (expectEmpty)
+    r.oracles.push_back({"empty", triangles == 0 ? Verdict::Pass : Verdict::Fail,
+                         std::to_string(triangles) + " triangles for an isovalue outside the data range", {}});
+  r.status = statusFromOracles(r.oracles);
+  return r;
+}
+
+// Extracted surface against the exact trilinear isosurface, per threshold, from the first camera.
+CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene& scene) {
+  CaseResult r;
+  r.id = id;
+  r.system = "iso";
+  r.description = "extracted surface vs the exact isosurface of the trilinear field, per error threshold";
+  const ref::Volume<std::uint16_t> volume = isoSceneVolume(scene);
+  ref::DenseGridField field(volume, ref::quantizedGradients(volume));
+  const ref::DiamondBounds bounds = ref::computeDiamondBounds(field.grid(), field.values(), ctx.threads());
+  const ref::ViewCamera camera = ref::orbitCamera(scene.path, 0, scene.camera);
+  const fx::RayImage exact = fx::castTrilinearIsosurface(volume, scene.isovalue, camera, ctx.threads());
+  nlohmann::json rows = nlohmann::json::array();
+  std::string summary;
+  for (double threshold : {8.0, 2.0, 0.5, 0.0}) {
+    ref::ViewRefinement refinement(bounds, scene.isovalue);
+    ref::RefinementBudget budget;
+    budget.threshold = threshold;
+    const auto t0 = std::chrono::steady_clock::now();
+    refinement.update(camera, budget);
+    ref::ExtractionStats es;
+    const ref::IsoMesh mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, scene.isovalue, &es);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const fx::RayImage img = fx::castMesh(mesh, camera, ctx.threads());
+    std::size_t both = 0, silhouette = 0;
+    double sum = 0.0, worst = 0.0;
+    for (std::size_t i = 0; i < img.depth.size(); ++i) {
+      const bool a = std::isfinite(img.depth[i]), b = std::isfinite(exact.depth[i]);
+      if (a != b) ++silhouette;
+      if (a && b) {
+        const double d = std::fabs(static_cast<double>(img.depth[i]) - exact.depth[i]);
+        ++both;
+        sum += d;
+        worst = std::max(worst, d);
+      }
+    }
+    const double mean = both == 0 ? 0.0 : sum / both;
+    rows.push_back({{"threshold_px", threshold},
+                    {"triangles", es.triangles},
+                    {"split_diamonds", refinement.mesh().splitCount()},
+                    {"refine_and_extract_s", seconds},
+                    {"mean_depth_error", mean},
+                    {"max_depth_error", worst},
+                    {"silhouette_pixels", silhouette}});
+    summary += "threshold " + std::to_string(threshold).substr(0, 4) + ": " + std::to_string(es.triangles) + " triangles, mean depth error " +
+               std::to_string(mean).substr(0, 6) + ", " + std::to_string(silhouette) + " silhouette px; ";
+  }
+  r.figures["thresholds"] = rows;
+  r.oracles.push_back({"ideal", Verdict::Info, summary, {}});
+  r.status = Status::Pass;
+  return r;
+}
+
+}  // namespace
+
+std::vector<Case> isoCases() {
+  std::vector<Case> cases;
+  auto frames = [&](const std::string& id, const std::string& description, const IsoScene& s, bool empty) {
+    cases.push_back({id, "iso", description, [=](CaseContext& ctx) { return judgeFrames(ctx, id, description, s, empty); }, std::nullopt});
+  };
+  for (const IsoScene& s : builtInIsoScenes()) {
+    frames("iso.frames." + s.name, "occlusion culling never culls a visible diamond, and GL draws each frame's mesh as Embree sees it (" + s.data + ")", s,
+           false);
+    const std::string id = "iso.accuracy." + s.name;
+    cases.push_back({id, "iso", "extracted vs exact trilinear isosurface per error threshold (" + s.data + ")",
+                     [=](CaseContext& ctx) { return judgeAccuracy(ctx, id, s); }, std::nullopt});
+  }
+  IsoScene broken = builtInIsoScenes().front();
+  broken.name = "broken_culler_is_caught";
+  broken.path.frames = 3;
+  broken.cullEveryTested = true;
+  frames("iso.control.broken_culler_is_caught", "negative control: a culler that culls every diamond it tests is caught culling visible ones", broken,
+         false);
+  for (const IsoScene& s : hardIsoScenes())
+    frames("iso.hard." + s.name, "hard case " + s.name + ": occlusion and mesh images through the frame loop", s, s.name == "isovalue_outside_range");
+  return cases;
+}
+
+}  // namespace voxref::conf

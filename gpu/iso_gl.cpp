@@ -1,0 +1,213 @@
+#include "gpu/iso_gl.h"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "gpu/gl_error.h"
+#include "gpu/gl_objects.h"
+#include "gpu/shader_sources.h"
+#include "reference/iso/iso_shading.h"
+
+namespace voxref::gpu {
+namespace {
+
+// An RGBA8 colour and a DEPTH_COMPONENT32F depth renderbuffer (float depth reads back exactly).
+class IsoTarget {
+ public:
+  IsoTarget(const GlApi& gl, int maxRenderbufferSize, int width, int height) : gl_(&gl), width_(width), height_(height) {
+    if (width > maxRenderbufferSize || height > maxRenderbufferSize)
+      throw GlUnsupported("a " + std::to_string(width) + "x" + std::to_string(height) + " target exceeds GL_MAX_RENDERBUFFER_SIZE " +
+                          std::to_string(maxRenderbufferSize));
+    color_ = renderbuffer(GL_RGBA8);
+    ids_ = renderbuffer(GL_R32UI);
+    depth_ = renderbuffer(GL_DEPTH_COMPONENT32F);
+    GLuint fb = 0;
+    gl.GenFramebuffers(1, &fb);
+    framebuffer_ = GlHandle(&gl, fb, [](const GlApi& g, GLuint i) { g.DeleteFramebuffers(1, &i); });
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fb);
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color_.id());
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_RENDERBUFFER, ids_.id());
+    gl.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+    if (const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER); status != GL_FRAMEBUFFER_COMPLETE)
+      throw GlError("the RGBA8 + DEPTH_COMPONENT32F framebuffer is incomplete (status " + std::to_string(status) + ")");
+    const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    gl.DrawBuffers(2, drawBuffers);
+    gl.Viewport(0, 0, width, height);
+    checkGl(gl, "creating the isosurface framebuffer");
+  }
+
+  void read(IsoImageGl& out) const {
+    const std::size_t n = static_cast<std::size_t>(width_) * height_;
+    out.width = width_;
+    out.height = height_;
+    out.rgba.resize(n);
+    out.windowDepth.resize(n);
+    out.primitive.resize(n);
+    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
+    gl_->ReadBuffer(GL_COLOR_ATTACHMENT1);
+    gl_->ReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.primitive.data());
+    gl_->ReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.windowDepth.data());
+    checkGl(*gl_, "reading back the isosurface image");
+  }
+
+ private:
+  GlHandle renderbuffer(GLenum format) {
+    GLuint rb = 0;
+    gl_->GenRenderbuffers(1, &rb);
+    GlHandle h(gl_, rb, [](const GlApi& g, GLuint i) { g.DeleteRenderbuffers(1, &i); });
+    gl_->BindRenderbuffer(GL_RENDERBUFFER, rb);
+    gl_->RenderbufferStorage(GL_RENDERBUFFER, format, width_, height_);
+    return h;
+  }
+  const GlApi* gl_;
+  int width_, height_;
+  GlHandle color_, ids_, depth_, framebuffer_;
+};
+
+GlHandle buffer(const GlApi& gl, GLenum target, const void* data, std::size_t bytes) {
+  GLuint b = 0;
+  gl.GenBuffers(1, &b);
+  GlHandle h(&gl, b, [](const GlApi& g, GLuint i) { g.DeleteBuffers(1, &i); });
+  gl.BindBuffer(target, b);
+  gl.BufferData(target, static_cast<GLsizeiptr>(bytes), bytes == 0 ? nullptr : data, GL_STATIC_DRAW);
+  return h;
+}
+
+glm::mat4 mvpOf(const ref::ViewCamera& camera) { return glm::mat4(ref::projectionMatrix(camera) * ref::viewMatrix(camera)); }
+
+// The mesh in vertex buffers, drawn with the shading program (colour writes as the caller set).
+class MeshDraw {
+ public:
+  MeshDraw(Context& context, const ref::IsoMesh& mesh)
+      : gl_(&context.gl()),
+        program_(context.gl(), context.info().glslNumber, shaders::kIsoMeshVert, shaders::kIsoMeshFrag, "iso_mesh.frag"),
+        vao_(context.gl()),
+        count_(static_cast<GLsizei>(mesh.indices.size())) {
+    vao_.bind();
+    positions_ = buffer(*gl_, GL_ARRAY_BUFFER, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+    gl_->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl_->EnableVertexAttribArray(0);
+    normals_ = buffer(*gl_, GL_ARRAY_BUFFER, mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+    gl_->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl_->EnableVertexAttribArray(1);
+    indices_ = buffer(*gl_, GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+    checkGl(*gl_, "uploading the isosurface mesh");
+  }
+  void draw(const ref::ViewCamera& camera) const {
+    program_.use();
+    const glm::mat4 mvp = mvpOf(camera);
+    gl_->UniformMatrix4fv(program_.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    gl_->Uniform3f(program_.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y), static_cast<float>(camera.eye.z));
+    gl_->Uniform1f(program_.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
+    vao_.bind();
+    if (count_ > 0) gl_->DrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
+    checkGl(*gl_, "drawing the isosurface mesh");
+  }
+
+ private:
+  const GlApi* gl_;
+  Program program_;
+  VertexArray vao_;
+  GLsizei count_;
+  GlHandle positions_, normals_, indices_;
+};
+
+void clearTarget(const GlApi& gl) {
+  gl.ClearDepth(1.0);
+  gl.DepthMask(GL_TRUE);
+  gl.ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  gl.Clear(GL_DEPTH_BUFFER_BIT);
+  const GLfloat black[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  const GLuint none[4] = {0, 0, 0, 0};
+  gl.ClearBufferfv(GL_COLOR, 0, black);
+  gl.ClearBufferuiv(GL_COLOR, 1, none);  // GL 4.6 section 17.4.3: integer buffers need ClearBuffer*
+  gl.Enable(GL_DEPTH_TEST);
+  gl.DepthFunc(GL_LESS);
+  gl.Disable(GL_CULL_FACE);
+  gl.Disable(GL_BLEND);
+}
+
+// The 12 triangles of a box, as 36 vertices.
+void appendBox(const QueryBox& b, std::vector<float>& out) {
+  static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+  auto corner = [&](int c) {
+    return std::array<float, 3>{static_cast<float>((c & 1) ? b.hi[0] : b.lo[0]), static_cast<float>((c & 2) ? b.hi[1] : b.lo[1]),
+                                static_cast<float>((c & 4) ? b.hi[2] : b.lo[2])};
+  };
+  for (const auto& f : kFaces)
+    for (int v : {f[0], f[1], f[2], f[0], f[2], f[3]})
+      for (float x : corner(v)) out.push_back(x);
+}
+
+}  // namespace
+
+IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref::ViewCamera& camera) {
+  const GlApi& gl = context.gl();
+  ref::cameraBasis(camera);  // validates
+  IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
+  clearTarget(gl);
+  MeshDraw(context, mesh).draw(camera);
+  IsoImageGl out;
+  target.read(out);
+  return out;
+}
+
+std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder, const std::vector<QueryBox>& boxes,
+                                              const ref::ViewCamera& camera) {
+  const GlApi& gl = context.gl();
+  const ref::CameraBasis basis = ref::cameraBasis(camera);
+  IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
+  clearTarget(gl);
+  gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  MeshDraw(context, occluder).draw(camera);
+
+  std::vector<float> vertices;
+  vertices.reserve(boxes.size() * 36 * 3);
+  for (const QueryBox& b : boxes) appendBox(b, vertices);
+  VertexArray vao(gl);
+  vao.bind();
+  const GlHandle vbo = buffer(gl, GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(float));
+  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  gl.EnableVertexAttribArray(0);
+  const Program program(gl, context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag, "occlusion_box.frag");
+  program.use();
+  const glm::mat4 mvp = mvpOf(camera);
+  gl.UniformMatrix4fv(program.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+  gl.DepthMask(GL_FALSE);
+  gl.DepthFunc(GL_LEQUAL);
+
+  std::vector<std::uint32_t> samples(boxes.size(), kNotTested);
+  std::vector<GLuint> queries(boxes.size(), 0);
+  std::vector<bool> begun(boxes.size(), false);
+  if (!boxes.empty()) gl.GenQueries(static_cast<GLsizei>(queries.size()), queries.data());
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    // A box reaching the near plane would be clipped: not testable, so visible.
+    double nearest = 1e300;
+    for (int c = 0; c < 8; ++c) {
+      const glm::dvec3 p((c & 1) ? boxes[i].hi[0] : boxes[i].lo[0], (c & 2) ? boxes[i].hi[1] : boxes[i].lo[1], (c & 4) ? boxes[i].hi[2] : boxes[i].lo[2]);
+      nearest = std::min(nearest, glm::dot(p - camera.eye, basis.forward));
+    }
+    if (nearest <= camera.nearPlane) continue;
+    begun[i] = true;
+    gl.BeginQuery(GL_SAMPLES_PASSED, queries[i]);
+    gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(36 * i), 36);
+    gl.EndQuery(GL_SAMPLES_PASSED);
+  }
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (!begun[i]) continue;  // GL 4.6 section 4.2: a name never begun is not a query object
+    GLuint n = 0;
+    gl.GetQueryObjectuiv(queries[i], GL_QUERY_RESULT, &n);
+    samples[i] = n;
+  }
+  if (!boxes.empty()) gl.DeleteQueries(static_cast<GLsizei>(queries.size()), queries.data());
+  checkGl(gl, "occlusion queries");
+  gl.DepthMask(GL_TRUE);
+  return samples;
+}
+
+}  // namespace voxref::gpu
