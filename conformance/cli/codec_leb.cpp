@@ -5,10 +5,13 @@
 #include <iostream>
 
 #include "conformance/cli/codecs.h"
+#include "conformance/io/atomic_file.h"
 #include "conformance/io/leb_file.h"
 #include "conformance/io/raw_volume.h"
 #include "conformance/runner.h"
 #include "reference/common/byte_stream.h"
+#include "reference/iso/diamond_bounds.h"
+#include "reference/iso/grid_field.h"
 #include "reference/leb/leb_codec.h"
 
 namespace voxref::cli {
@@ -76,6 +79,11 @@ int encodeLebCommand(const EncodeOptions& o) {
   const double seconds = secondsSince(t0);
   io::writeLebFile(o.out, stream);
   std::cout << "wrote " << o.out.string() << " in " << seconds << " s\n";
+  if (!o.boundsOut.empty()) {
+    const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
+    io::writeFileAtomically(o.boundsOut, ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values())));
+    std::cout << "wrote the diamond bounds into " << o.boundsOut.string() << "\n";
+  }
   printInfo(ref::parseLebStream(std::move(stream)), std::cout);
   return 0;
 }

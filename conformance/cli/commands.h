@@ -58,6 +58,7 @@ struct EncodeOptions {
   std::string alphaOne = "refine";
   int pageBits = 12;         // leb: 2^pageBits points per page
   bool noGradients = false;  // leb: data channel only
+  std::filesystem::path boundsOut;  // leb: also write the per-diamond bounds (reference/iso/BOUNDS_FORMAT.md)
   std::filesystem::path out;
 };
 int runEncode(const EncodeOptions& o);

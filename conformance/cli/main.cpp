@@ -69,6 +69,7 @@ int main(int argc, char** argv) {
   encodeCmd->add_option("--alpha-one", encode.alphaOne, "homogeneous colours with alpha 255: refine (lossless) or paper")->default_val("refine");
   encodeCmd->add_option("--page-bits", encode.pageBits, "leb: pages of 2^N points (4..20)")->default_val(12);
   encodeCmd->add_flag("--no-gradients", encode.noGradients, "leb: code the data only, no gradients channel");
+  encodeCmd->add_option("--bounds-out", encode.boundsOut, "leb: also write the per-diamond min, max and error for isosurfaces (.vxlbb)");
   encodeCmd->add_option("--out", encode.out, "output file (.vxtv, .vxleb)")->required();
 
   DecodeOptions decode;

@@ -16,6 +16,8 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "reference/iso/grid_field.h"
@@ -36,6 +38,12 @@ struct DiamondBounds {
 
 // Values of a dense field only (it reads every point): DenseGridField::values().
 DiamondBounds computeDiamondBounds(const LebGrid& grid, const std::vector<std::uint16_t>& values, int threads = 0);
+
+// The bounds as bytes stored beside a compressed stream (reference/iso/BOUNDS_FORMAT.md), and back.
+// parseDiamondBounds checks the magic, version, grid, exact size, CRC-32 and min <= max, and
+// throws StreamError naming the offset and field of the first problem.
+std::string serializeDiamondBounds(const DiamondBounds& bounds);
+DiamondBounds parseDiamondBounds(std::string_view bytes);
 
 // The axis-aligned box of a diamond's vertices (ring, split edge and split vertex), in grid
 // coordinates.

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "reference/common/byte_stream.h"
 #include "reference/leb/diamond_mesh.h"
 #include "tests/reference/iso/iso_test_fields.h"
 
@@ -107,6 +108,38 @@ TEST(DiamondBounds, SameForEveryThreadCount) {
   EXPECT_EQ(a.min, b.min);
   EXPECT_EQ(a.max, b.max);
   EXPECT_EQ(a.error, b.error);
+}
+
+}  // namespace
+}  // namespace voxref::ref
+
+namespace voxref::ref {
+namespace {
+
+TEST(DiamondBoundsFile, RoundTripsAndRefusesCorruption) {
+  const Volume<std::uint16_t> v = test_support::ballVolume({20, 11, 17}, 9.0, 5.0, 7.0);
+  const DenseGridField f = test_support::denseField(v);
+  const DiamondBounds b = computeDiamondBounds(f.grid(), f.values());
+  const std::string bytes = serializeDiamondBounds(b);
+  EXPECT_EQ(bytes.size(), 12 + 8 * f.grid().pointCount());
+  const DiamondBounds back = parseDiamondBounds(bytes);
+  EXPECT_EQ(back.grid.k, b.grid.k);
+  EXPECT_EQ(back.min, b.min);
+  EXPECT_EQ(back.max, b.max);
+  EXPECT_EQ(back.error, b.error);
+  auto error = [](const std::string& s) {
+    try {
+      parseDiamondBounds(s);
+    } catch (const StreamError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("JUNK" + bytes.substr(4)).find("not diamond bounds"), std::string::npos);
+  EXPECT_NE(error(bytes.substr(0, bytes.size() - 1)).find("size:"), std::string::npos);
+  std::string flipped = bytes;
+  flipped[100] = static_cast<char>(flipped[100] ^ 1);
+  EXPECT_NE(error(flipped).find("crc32"), std::string::npos);
 }
 
 }  // namespace
