@@ -24,12 +24,8 @@ std::vector<IsoScene> benchScenes(const BenchOptions& o) {
   auto at = [&](std::string name, const ref::Dims3& dims, double iso) {
     IsoScene s = base;
     s.name = std::move(name);
-    s.dims = dims;
+    aimOrbitAt(s, dims);
     s.isovalue = iso;
-    const double c = (std::max({dims[0], dims[1], dims[2]}) - 1) / 2.0;
-    s.path.center = {(dims[0] - 1) / 2.0, (dims[1] - 1) / 2.0, (dims[2] - 1) / 2.0};
-    s.path.radius = 2.2 * c;
-    s.camera.farPlane = 8.0 * c;
     s.camera.width = s.camera.height = o.quick ? 64 : 256;
     s.path.frames = o.quick ? 2 : 8;
     s.budget.maxSplits = o.quick ? 5000 : 40000;

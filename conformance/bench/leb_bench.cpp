@@ -27,10 +27,6 @@ struct LebDataset {
   std::string paper[3];  // Table 1: Data+G, Data, Grad
 };
 
-ref::Volume<std::uint16_t> widen(const ref::Volume<std::uint8_t>& v) {
-  return ref::Volume<std::uint16_t>(v.dims(), std::vector<std::uint16_t>(v.data().begin(), v.data().end()));
-}
-
 // The paper's resampling of the engine to 256^3 ("resampled to 256^3 with the cell aspect ratios
 // appropriately adjusted at runtime"), as voxref makes it: the original slices at even z, and at
 // odd z the rounded-down mean of the slices around (the last slice repeated). The inserted slices
@@ -57,14 +53,14 @@ LebDataset shared(const BenchOptions& o, const std::string& name, const std::str
     return d;
   }
   const ref::Volume<std::uint8_t> v = io::readRawVolumeU8(path, dims);
-  d.volume = widen(doubled ? doubleSlices(v) : v);
+  d.volume = ref::widenToU16(doubled ? doubleSlices(v) : v);
   return d;
 }
 
 LebDataset buckyball(int side) {
   LebDataset d;
   d.name = "Gaussian buckyball " + std::to_string(side) + "^3 (synthetic)";
-  d.volume = widen(ref::sampleFieldU8(ref::analyticField("gaussian_buckyball"), {side, side, side}));
+  d.volume = ref::widenToU16(ref::sampleFieldU8(ref::analyticField("gaussian_buckyball"), {side, side, side}));
   return d;
 }
 

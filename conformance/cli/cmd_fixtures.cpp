@@ -21,12 +21,8 @@ std::vector<conf::IsoScene> requestedScenes(const FixturesOptions& o) {
     s.volumeFile = std::filesystem::absolute(o.volume);
     s.volumeIsUint16 = o.type == "uint16";
     s.data.clear();
-    s.dims = {o.dims[0], o.dims[1], o.dims[2]};
+    conf::aimOrbitAt(s, {o.dims[0], o.dims[1], o.dims[2]});
     s.isovalue = o.isovalue;
-    const double c = (s.dims[0] - 1) / 2.0;
-    s.path.center = {c, (s.dims[1] - 1) / 2.0, (s.dims[2] - 1) / 2.0};
-    s.path.radius = 2.2 * std::max({c, (s.dims[1] - 1) / 2.0, (s.dims[2] - 1) / 2.0});
-    s.camera.farPlane = 8.0 * s.path.radius;
     scenes.push_back(s);
   } else {
     for (const conf::IsoScene& s : conf::builtInIsoScenes())

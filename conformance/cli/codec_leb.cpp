@@ -60,8 +60,7 @@ int encodeLebCommand(const EncodeOptions& o) {
   ref::Volume<std::uint16_t> volume;
   int bits = 8;
   if (*type == io::VoxelType::UInt8) {
-    const ref::Volume<std::uint8_t> v8 = io::readRawVolumeU8(o.inputs[0], dims);
-    volume = ref::Volume<std::uint16_t>(dims, std::vector<std::uint16_t>(v8.data().begin(), v8.data().end()));
+    volume = ref::widenToU16(io::readRawVolumeU8(o.inputs[0], dims));
   } else {
     volume = io::readRawVolumeU16(o.inputs[0], dims);
     bits = 16;

@@ -1,5 +1,7 @@
 #include "conformance/iso/iso_scene.h"
 
+#include <algorithm>
+
 #include "conformance/io/raw_volume.h"
 #include "reference/common/fields.h"
 
@@ -51,8 +53,7 @@ IsoScene isoSceneFromJson(const nlohmann::json& j) {
 ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
   if (!scene.volumeFile.empty()) {
     if (scene.volumeIsUint16) return io::readRawVolumeU16(scene.volumeFile, scene.dims);
-    const ref::Volume<std::uint8_t> v8 = io::readRawVolumeU8(scene.volumeFile, scene.dims);
-    return ref::Volume<std::uint16_t>(scene.dims, std::vector<std::uint16_t>(v8.data().begin(), v8.data().end()));
+    return ref::widenToU16(io::readRawVolumeU8(scene.volumeFile, scene.dims));
   }
   if (scene.data == "single_voxel") {  // one voxel of 200 in zeros, off every symmetry plane
     ref::Volume<std::uint16_t> v(scene.dims, 0);
@@ -66,8 +67,15 @@ ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
         for (int x = scene.dims[0] / 4; x < scene.dims[0] / 2; ++x) v.at(x, y, z) = static_cast<std::uint16_t>(scene.isovalue);
     return v;
   }
-  const ref::Volume<std::uint8_t> v8 = ref::sampleFieldU8(ref::analyticField(scene.data), scene.dims);
-  return ref::Volume<std::uint16_t>(scene.dims, std::vector<std::uint16_t>(v8.data().begin(), v8.data().end()));
+  return ref::widenToU16(ref::sampleFieldU8(ref::analyticField(scene.data), scene.dims));
+}
+
+void aimOrbitAt(IsoScene& s, const ref::Dims3& dims) {
+  s.dims = dims;
+  const double c = (std::max({dims[0], dims[1], dims[2]}) - 1) / 2.0;
+  s.path.center = {(dims[0] - 1) / 2.0, (dims[1] - 1) / 2.0, (dims[2] - 1) / 2.0};
+  s.path.radius = 2.2 * c;
+  s.camera.farPlane = 8.0 * c;
 }
 
 std::vector<IsoScene> builtInIsoScenes() {
@@ -75,11 +83,8 @@ std::vector<IsoScene> builtInIsoScenes() {
     IsoScene s;
     s.name = std::move(name);
     s.data = std::move(data);
-    s.dims = dims;
+    aimOrbitAt(s, dims);
     s.isovalue = iso;
-    const double c = (dims[0] - 1) / 2.0;
-    s.path.center = {c, (dims[1] - 1) / 2.0, (dims[2] - 1) / 2.0};
-    s.path.radius = 2.2 * c;
     s.path.elevationDegrees = 25.0;
     s.path.azimuthStartDegrees = 10.0;
     s.path.azimuthEndDegrees = 130.0;
@@ -87,7 +92,6 @@ std::vector<IsoScene> builtInIsoScenes() {
     s.camera.width = s.camera.height = 96;
     s.camera.fovYDegrees = 40.0;
     s.camera.nearPlane = 0.5;
-    s.camera.farPlane = 8.0 * c;
     s.budget.threshold = 1.0;
     s.budget.maxSplits = 6000;
     return s;

@@ -38,6 +38,10 @@ struct IsoScene {
   double isovalueStep = 0.0;
 };
 
+// Points the orbit at the centre of `dims` at 2.2 half-extents of its largest axis, the far plane at
+// 8 half-extents; sets scene.dims.
+void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
+
 // The scene as JSON and back (fixture manifests). fromJson throws nlohmann::json exceptions that
 // name the missing or mistyped key.
 nlohmann::json toJson(const IsoScene& scene);

@@ -59,21 +59,42 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
     fr.isovalue = iso;
     fr.camera = ref::orbitCamera(scene.path, f, scene.camera);
 
+    std::unordered_set<std::uint64_t> culled;  // diamonds (linear index) culled this frame
+    auto isCulled = [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; };
+    auto queryDiamonds = [&](const ref::IsoMesh& occluder, const std::vector<ref::GridPoint>& diamonds) {
+      std::vector<gpu::QueryBox> boxes;
+      for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, volume.dims()));
+      return gpu::occlusionQueriesGl(gl, occluder, boxes, fr.camera);
+    };
+    auto refineAndExtract = [&] {
+      auto t = std::chrono::steady_clock::now();
+      const ref::RefinementStats st = refinement.update(fr.camera, scene.budget, isCulled);
+      fr.refinement.splits += st.splits;
+      fr.refinement.merges += st.merges;
+      fr.refinement.splitQueue = st.splitQueue;
+      fr.refinement.mergeQueue = st.mergeQueue;
+      fr.refinement.budgetExhausted = fr.refinement.budgetExhausted || st.budgetExhausted;
+      fr.secondsRefine += since(t);
+      t = std::chrono::steady_clock::now();
+      ref::ExtractionStats es;
+      fr.mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, iso, &es);
+      fr.secondsExtract += since(t);
+      fr.triangles = es.triangles;
+      fr.leafTetrahedra = es.leafTetrahedra;
+    };
+
     // 1. Occlusion queries against the previous frame's surface.
-    std::unordered_set<std::uint64_t> culled;
     std::vector<ref::GridPoint> tested;
     auto t0 = std::chrono::steady_clock::now();
     if (scene.occlusionCulling && occludersValid) {
-      std::vector<gpu::QueryBox> boxes;
       for (const auto& queue : {refinement.splitQueue(), refinement.mergeQueue()})
         for (const ref::GridPoint& d : queue) {
           if (!bounds.mayContain(d, iso)) continue;
           const auto it = visibleAt.find(grid.linearIndex(d));
           if (it != visibleAt.end() && f - it->second < scene.retestVisibleEvery) continue;
           tested.push_back(d);
-          boxes.push_back(queryBox(grid, d, volume.dims()));
         }
-      const std::vector<std::uint32_t> samples = gpu::occlusionQueriesGl(gl, previous, boxes, fr.camera);
+      const std::vector<std::uint32_t> samples = queryDiamonds(previous, tested);
       for (std::size_t i = 0; i < tested.size(); ++i) {
         const std::uint64_t id = grid.linearIndex(tested[i]);
         if (samples[i] == 0 || scene.cullEveryTested) {
@@ -84,33 +105,19 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
       }
     }
     fr.occlusionTests = tested.size();
-    fr.culled = culled.size();
     fr.secondsQueries = since(t0);
 
     // 2. Refinement; 3. extraction.
-    t0 = std::chrono::steady_clock::now();
-    fr.refinement = refinement.update(fr.camera, scene.budget, [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; });
-    fr.secondsRefine = since(t0);
-    t0 = std::chrono::steady_clock::now();
-    ref::ExtractionStats es;
-    fr.mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, iso, &es);
-    fr.secondsExtract = since(t0);
-    fr.triangles = es.triangles;
-    fr.leafTetrahedra = es.leafTetrahedra;
-    fr.pagesDecoded = field.reader().cacheStats().misses;
+    refineAndExtract();
 
     // Optional verification: culled diamonds whose boxes show against this frame's own surface
     // are un-culled and the frame is refined and extracted again.
     if (scene.verifyCulls && !culled.empty()) {
       t0 = std::chrono::steady_clock::now();
       std::vector<ref::GridPoint> suspects;
-      std::vector<gpu::QueryBox> boxes;
       for (const ref::GridPoint& d : tested)
-        if (culled.count(grid.linearIndex(d)) != 0) {
-          suspects.push_back(d);
-          boxes.push_back(queryBox(grid, d, volume.dims()));
-        }
-      const std::vector<std::uint32_t> samples = gpu::occlusionQueriesGl(gl, fr.mesh, boxes, fr.camera);
+        if (isCulled(d)) suspects.push_back(d);
+      const std::vector<std::uint32_t> samples = queryDiamonds(fr.mesh, suspects);
       for (std::size_t i = 0; i < suspects.size(); ++i)
         if (samples[i] != 0) {
           culled.erase(grid.linearIndex(suspects[i]));
@@ -118,23 +125,10 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
           ++fr.revokedCulls;
         }
       fr.secondsQueries += since(t0);
-      if (fr.revokedCulls > 0) {
-        t0 = std::chrono::steady_clock::now();
-        const ref::RefinementStats again =
-            refinement.update(fr.camera, scene.budget, [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; });
-        fr.refinement.splits += again.splits;
-        fr.refinement.merges += again.merges;
-        fr.refinement.splitQueue = again.splitQueue;
-        fr.refinement.mergeQueue = again.mergeQueue;
-        fr.secondsRefine += since(t0);
-        t0 = std::chrono::steady_clock::now();
-        fr.mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, iso, &es);
-        fr.secondsExtract += since(t0);
-        fr.triangles = es.triangles;
-        fr.leafTetrahedra = es.leafTetrahedra;
-      }
-      fr.culled = culled.size();
+      if (fr.revokedCulls > 0) refineAndExtract();
     }
+    fr.culled = culled.size();
+    fr.pagesDecoded = field.reader().cacheStats().misses;
 
     // 4. GL image and ground truth.
     t0 = std::chrono::steady_clock::now();
@@ -155,9 +149,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
     // A culled diamond is judged where it ended: still a leaf (its own tetrahedra), or merged
     // (its tetrahedra then belong to it as a leaf again); either way by its own id.
     for (std::uint64_t id : culled) {
-      const auto n = static_cast<std::uint64_t>(grid.pointsPerAxis());
-      const ref::GridPoint d{static_cast<int>(id % n), static_cast<int>(id / n % n), static_cast<int>(id / (n * n))};
-      if (visible.count(static_cast<ref::DiamondId>(order.index(d))) != 0) {
+      if (visible.count(static_cast<ref::DiamondId>(order.index(grid.pointAt(id)))) != 0) {
         ++fr.falseCulls;
       } else {
         ++fr.culledInvisible;

@@ -24,7 +24,7 @@ struct ScreenTriangle {
 double coverage(const ScreenTriangle& t, const glm::dvec2& c) {
   const double area = (t.p[1].x - t.p[0].x) * (t.p[2].y - t.p[0].y) - (t.p[1].y - t.p[0].y) * (t.p[2].x - t.p[0].x);
   if (area == 0.0) return -kInf;
-  double inside = kInf, outside = 0.0;
+  double inside = kInf;
   bool in = true;
   for (int e = 0; e < 3; ++e) {
     const glm::dvec2 u = t.p[e], v = t.p[(e + 1) % 3];
@@ -36,7 +36,7 @@ double coverage(const ScreenTriangle& t, const glm::dvec2& c) {
   }
   if (in) return inside;
   // Outside: the distance to the closest point of the triangle (the nearest edge segment).
-  outside = kInf;
+  double outside = kInf;
   for (int e = 0; e < 3; ++e) {
     const glm::dvec2 u = t.p[e], v = t.p[(e + 1) % 3];
     const glm::dvec2 d = v - u;

@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,5 +42,11 @@ class Volume {
   Dims3 dims_{0, 0, 0};
   std::vector<T> data_;
 };
+
+// The samples of an 8-bit volume as 16-bit ones (the codecs and the isosurface system work on
+// uint16).
+inline Volume<std::uint16_t> widenToU16(const Volume<std::uint8_t>& v) {
+  return Volume<std::uint16_t>(v.dims(), std::vector<std::uint16_t>(v.data().begin(), v.data().end()));
+}
 
 }  // namespace voxref::ref

@@ -40,10 +40,7 @@ ViewRefinement::ViewRefinement(const DiamondBounds& bounds, double isovalue) : b
   }
 }
 
-GridPoint ViewRefinement::pointOf(std::uint64_t id) const {
-  const auto n = static_cast<std::uint64_t>(bounds_->grid.pointsPerAxis());
-  return {static_cast<int>(id % n), static_cast<int>(id / n % n), static_cast<int>(id / (n * n))};
-}
+GridPoint ViewRefinement::pointOf(std::uint64_t id) const { return bounds_->grid.pointAt(id); }
 
 double ViewRefinement::priority(const GridPoint& d) const {
   if (!bounds_->mayContain(d, isovalue_)) return 0.0;

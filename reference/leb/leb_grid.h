@@ -51,6 +51,11 @@ struct LebGrid {
     const auto n = static_cast<std::uint64_t>(pointsPerAxis());
     return static_cast<std::uint64_t>(p[0]) + n * (static_cast<std::uint64_t>(p[1]) + n * static_cast<std::uint64_t>(p[2]));
   }
+  // The inverse of linearIndex.
+  GridPoint pointAt(std::uint64_t linear) const {
+    const auto n = static_cast<std::uint64_t>(pointsPerAxis());
+    return {static_cast<int>(linear % n), static_cast<int>(linear / n % n), static_cast<int>(linear / (n * n))};
+  }
 };
 
 // Throws std::invalid_argument unless 0 <= k <= kMaxLebK.
