@@ -1,6 +1,7 @@
 cmake_minimum_required(VERSION 3.25)
 # Script mode: writes OUTPUT, a header that holds each of INPUTS (a |-separated list of files) as an
-# inline constexpr std::string_view named k<Stem><Ext> (combination.frag -> kCombinationFrag).
+# inline constexpr std::string_view named k<Stem><Ext> (combination.frag -> kCombinationFrag;
+# '_' and '-' separate words).
 # Invoked by voxref_embed_text() at build time so that editing a shader rebuilds its users.
 string(REPLACE "|" ";" INPUTS "${INPUTS}")
 set(content "// Generated from ${INPUTS} by cmake/EmbedText.cmake. Do not edit.\n#pragma once\n#include <string_view>\nnamespace ${NAMESPACE} {\n")
@@ -11,7 +12,7 @@ foreach(file IN LISTS INPUTS)
   string(SUBSTRING "${ext}" 1 -1 ext)
   set(ident "")
   foreach(part IN ITEMS ${stem} ${ext})
-    string(REPLACE "_" ";" words "${part}")
+    string(REGEX REPLACE "[-_]" ";" words "${part}")  # shader-interface.md -> kShaderInterfaceMd
     foreach(word IN LISTS words)
       string(SUBSTRING "${word}" 0 1 first)
       string(TOUPPER "${first}" first)

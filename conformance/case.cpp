@@ -25,6 +25,18 @@ std::string_view name(Verdict v) {
   return "?";
 }
 
+std::optional<Status> parseStatus(std::string_view s) {
+  for (Status v : {Status::Pass, Status::Warn, Status::Fail, Status::Skip, Status::Crash, Status::Timeout})
+    if (name(v) == s) return v;
+  return std::nullopt;
+}
+
+std::optional<Verdict> parseVerdict(std::string_view s) {
+  for (Verdict v : {Verdict::Pass, Verdict::Warn, Verdict::Fail, Verdict::NotRun, Verdict::Info})
+    if (name(v) == s) return v;
+  return std::nullopt;
+}
+
 Status statusFromOracles(const std::vector<OracleResult>& oracles) {
   Status s = Status::Pass;
   for (const OracleResult& o : oracles) {

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -19,10 +20,12 @@ class CaseContext;
 
 enum class Status { Pass, Warn, Fail, Skip, Crash, Timeout };
 std::string_view name(Status s);
+std::optional<Status> parseStatus(std::string_view s);  // nullopt for an unknown name
 
 // Per oracle. NotRun carries its reason in `summary` (for example GL could not run the case).
 enum class Verdict { Pass, Warn, Fail, NotRun, Info };
 std::string_view name(Verdict v);
+std::optional<Verdict> parseVerdict(std::string_view s);
 
 struct OracleResult {
   std::string oracle;  // "exact", "envelope", "ideal"
@@ -39,6 +42,18 @@ struct Finding {
   nlohmann::json figures = nlohmann::json::object();
 };
 
+// One sample a case singles out for the report's magnified view: where it is (pixel x, y with
+// row 0 at the bottom as GL reads back, and the plane or frame k), what the GL, emulated and
+// reference paths hold there (NaN where a path has no value), and, when an envelope judged it,
+// the interval it allows. Cases list their worst samples first, at most kMaxWorstPixels.
+struct PixelValues {
+  int x = 0, y = 0, k = 0;
+  std::string oracle;  // the oracle that singled it out ("exact", "envelope", ...)
+  double gl = 0.0, emulated = 0.0, reference = 0.0;
+  std::optional<std::pair<double, double>> allowed;
+};
+inline constexpr std::size_t kMaxWorstPixels = 16;
+
 struct CaseImages {  // paths relative to the report directory; empty when not written
   std::string rendered, emulated, reference, errorMask;
 };
@@ -47,12 +62,14 @@ struct CaseResult {
   std::string id, system, description;
   Status status = Status::Pass;
   std::string message;  // reason of a skip, crash or failure
+  std::string stderrText;  // what the case's process wrote to stdout and stderr (kept for crashes and timeouts)
   std::vector<OracleResult> oracles;
   std::vector<std::string> effects;  // emulation/effects.h ids the emulator simulated
   std::vector<Finding> findings;
   nlohmann::json figures = nlohmann::json::object();  // the case's own numbers (grids, passes ...)
   double secondsGl = 0.0, secondsEmulation = 0.0, secondsReference = 0.0;
   CaseImages images;
+  std::vector<PixelValues> worstPixels;
 };
 
 // Fail if any oracle failed, else warn if any warned, else pass; NotRun and Info do not count.

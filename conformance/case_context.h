@@ -12,6 +12,7 @@
 
 #include "emulation/profile.h"
 #include "gpu/context.h"
+#include "gpu/shader_override.h"
 
 namespace voxref::conf {
 
@@ -26,6 +27,10 @@ class CaseContext {
   const std::filesystem::path& outDir() const { return outDir_; }
   int threads() const { return threads_; }
   bool writeAllImages() const { return allImages_; }
+  // A user's shader in place of a built-in stage (voxref check-shader), or nullptr. Cases hand it
+  // to the GL passes, which use it only for the stage it names; it must outlive the context.
+  const gpu::ShaderOverride* shaderOverride() const { return shaderOverride_; }
+  void setShaderOverride(const gpu::ShaderOverride* shader) { shaderOverride_ = shader; }
 
   // The value cached under `key`, made by `make` on a miss. Keeps the last few entries.
   template <class T>
@@ -48,6 +53,7 @@ class CaseContext {
   std::filesystem::path outDir_;
   int threads_;
   bool allImages_;
+  const gpu::ShaderOverride* shaderOverride_ = nullptr;
   std::list<std::pair<std::string, std::shared_ptr<void>>> cache_;
 };
 

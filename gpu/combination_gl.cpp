@@ -5,7 +5,6 @@
 #include "gpu/gl_error.h"
 #include "gpu/gl_formats.h"
 #include "gpu/gl_objects.h"
-#include "gpu/shader_sources.h"
 
 namespace voxref::gpu {
 
@@ -20,7 +19,7 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
   gridTextures.reserve(textures.textures.size());
   for (const ref::GridTexture& t : textures.textures)
     gridTextures.emplace_back(gl, info.max3DTextureSize, t.dims, textures.format, t.codes, sampler);
-  Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kCombinationFrag, "combination.frag", shaders::kSamplePointGlsl);
+  const Program program = buildStageProgram(context, combinationStage(), options.shader);
   VertexArray vao(gl);
 
   target.bind();

@@ -109,6 +109,18 @@ void ColorTarget::readRedCodes(std::vector<std::uint32_t>& out) const {
   }
 }
 
+void ColorTarget::readRgbaCodes(std::vector<std::array<std::uint32_t, 4>>& out) const {
+  const ReadbackType rt = readbackType(format_);
+  const std::size_t n = static_cast<std::size_t>(width_) * height_;
+  std::vector<unsigned char> bytes(n * 4 * rt.bytes);
+  gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+  gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, rt.type, bytes.data());
+  checkGl(*gl_, "reading back the " + std::string(ref::name(format_)) + " target (RGBA)");
+  out.assign(n, {0, 0, 0, 0});
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t c = 0; c < 4; ++c) std::memcpy(&out[i][c], bytes.data() + (i * 4 + c) * rt.bytes, rt.bytes);  // little endian
+}
+
 void ColorTarget::readRgba8(std::vector<std::array<std::uint8_t, 4>>& out) const {
   if (format_ != ref::FramebufferFormat::RGBA8) throw GlError("readRgba8 reads RGBA8 targets only");
   out.resize(static_cast<std::size_t>(width_) * height_);
@@ -156,8 +168,8 @@ GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view s
 }  // namespace
 
 Program::Program(const GlApi& gl, int glslNumber, std::string_view vertexSource, std::string_view fragmentSource,
-                 std::string_view sourceName, std::string_view fragmentLibrary)
-    : gl_(&gl), name_(sourceName) {
+                 std::string_view sourceName, std::string_view fragmentLibrary, Uniforms uniforms)
+    : gl_(&gl), name_(sourceName), uniforms_(uniforms) {
   const GLuint vs = compile(gl, GL_VERTEX_SHADER, glslNumber, vertexSource, sourceName);
   GLuint fs = 0;
   try {
@@ -183,7 +195,7 @@ void Program::use() const { gl_->UseProgram(handle_.id()); }
 
 GLint Program::uniform(const char* uniformName) const {
   const GLint loc = gl_->GetUniformLocation(handle_.id(), uniformName);
-  if (loc < 0) throw GlError("program " + name_ + " has no active uniform '" + uniformName + "'");
+  if (loc < 0 && uniforms_ == Uniforms::Required) throw GlError("program " + name_ + " has no active uniform '" + uniformName + "'");
   return loc;
 }
 

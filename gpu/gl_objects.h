@@ -67,6 +67,9 @@ class ColorTarget {
   void readRedCodes(std::vector<std::uint32_t>& out) const;
   // All four channels of an RGBA8 target as bytes, row 0 at the bottom (GlError for other formats).
   void readRgba8(std::vector<std::array<std::uint8_t, 4>>& out) const;
+  // All four channels' stored codes (unorm codes, half bits or float bits) in the format's native
+  // type, row 0 at the bottom.
+  void readRgbaCodes(std::vector<std::array<std::uint32_t, 4>>& out) const;
   int width() const { return width_; }
   int height() const { return height_; }
 
@@ -84,16 +87,22 @@ class ColorTarget {
 // ShaderError with the log and the source name.
 class Program {
  public:
+  // Required: uniform() throws for a name the program does not use (a built-in shader that lost a
+  // uniform is a bug). Optional: uniform() returns -1 for it, which glUniform* ignores (a user's
+  // shader, shader_override.h, may leave out what it does not read).
+  enum class Uniforms { Required, Optional };
   Program(const GlApi& gl, int glslNumber, std::string_view vertexSource, std::string_view fragmentSource,
-          std::string_view sourceName, std::string_view fragmentLibrary = {});
+          std::string_view sourceName, std::string_view fragmentLibrary = {}, Uniforms uniforms = Uniforms::Required);
   void use() const;
-  // Location of a uniform; throws GlError if the program has no active uniform of that name.
+  // Location of a uniform; for Uniforms::Required throws GlError if the program has no active
+  // uniform of that name.
   GLint uniform(const char* name) const;
 
  private:
   const GlApi* gl_;
   GlHandle handle_;
   std::string name_;
+  Uniforms uniforms_;
 };
 
 // An empty vertex array object, for attribute-less full-screen triangles (core profile needs one).

@@ -5,7 +5,6 @@
 
 #include "gpu/gl_error.h"
 #include "gpu/gl_objects.h"
-#include "gpu/shader_sources.h"
 
 namespace voxref::gpu {
 namespace {
@@ -27,18 +26,8 @@ std::vector<unsigned char> indexBytes(const ref::IndexTexture& index) {
   return out;
 }
 
-std::string_view source(ref::DecoderVariant v) {
-  switch (v) {
-    case ref::DecoderVariant::Literal: return shaders::kTimevaryingLiteralFrag;
-    case ref::DecoderVariant::Paper: return shaders::kTimevaryingPaperFrag;
-    case ref::DecoderVariant::TexelCentre: return shaders::kTimevaryingTexelCentreFrag;
-    case ref::DecoderVariant::TexelFetch: return shaders::kTimevaryingTexelFetchFrag;
-  }
-  return {};
-}
-
-// Sets the decoder's uniforms for time step `step` (a uniform the variant does not declare is
-// simply not set: each shader declares what it reads).
+// Sets the decoder's uniforms for time step `step` (a user's shader may leave some out: its
+// Program tolerates them, shader_override.h).
 void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVariant v, const ref::TimeVaryingLayout& L, int step) {
   const auto slot = ref::indexSlot(L, step);
   const float S = static_cast<float>(L.indexSlots), n = static_cast<float>(L.cells);
@@ -74,7 +63,7 @@ void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVar
 enum class Mode { DecodePlanes, Composite };
 
 ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::DecoderVariant variant, int step,
-                   const ref::PlaneFrame& frame, Mode mode, const std::function<void(int)>& progress) {
+                   const ref::PlaneFrame& frame, Mode mode, const std::function<void(int)>& progress, const ShaderOverride* shader) {
   if (const std::string why = ref::decoderIncompatibility(variant, tex.layout, tex.index.encoding); !why.empty())
     throw std::invalid_argument(why);
   if (step < 0 || step >= tex.layout.timeSteps) throw std::invalid_argument("time step " + std::to_string(step) + " is outside the series");
@@ -85,8 +74,7 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
   Texture3D index(gl, info.max3DTextureSize, tex.index.dims, indexUpload(tex.index.encoding), ib.data(), nearest);
   Texture3D refinement(gl, info.max3DTextureSize, tex.refinement.dims, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE}, tex.refinement.texels.data(), nearest);
   ColorTarget target(gl, info.maxRenderbufferSize, ref::FramebufferFormat::RGBA8, frame.width, frame.height);
-  Program program(gl, info.glslNumber, shaders::kFullscreenVert, source(variant), "timevarying_" + std::string(ref::name(variant)) + ".frag",
-                  shaders::kSamplePointGlsl);
+  const Program program = buildStageProgram(context, decoderStage(variant), shader);
   VertexArray vao(gl);
   target.bind();
   vao.bind();
@@ -138,13 +126,13 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
 }  // namespace
 
 ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress) {
-  return run(context, textures, variant, step, frame, Mode::DecodePlanes, progress);
+                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress, const ShaderOverride* shader) {
+  return run(context, textures, variant, step, frame, Mode::DecodePlanes, progress, shader);
 }
 
 ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress) {
-  return run(context, textures, variant, step, frame, Mode::Composite, progress);
+                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress, const ShaderOverride* shader) {
+  return run(context, textures, variant, step, frame, Mode::Composite, progress, shader);
 }
 
 }  // namespace voxref::gpu

@@ -8,6 +8,7 @@
 #include <functional>
 
 #include "gpu/context.h"
+#include "gpu/shader_override.h"
 #include "reference/common/plane_frame.h"
 #include "reference/common/rgba.h"
 #include "reference/timevarying/decoder_variants.h"
@@ -16,12 +17,16 @@ namespace voxref::gpu {
 
 // Every plane decoded separately into an RGBA8 target (no blending). Throws GlUnsupported when a
 // texture exceeds the context's limits, std::invalid_argument for a decoder that cannot read the
-// textures (decoderIncompatibility).
+// textures (decoderIncompatibility), ShaderError when `shader` does not compile. `shader`: a
+// user's fragment shader in place of the variant's (shader_override.h); nullptr or another
+// stage's: the built-in one.
 ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {});
+                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
+                              const ShaderOverride* shader = nullptr);
 
 // The planes composited from the back (k = planes - 1) to the front (k = 0): one image.
 ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {});
+                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
+                           const ShaderOverride* shader = nullptr);
 
 }  // namespace voxref::gpu

@@ -10,6 +10,8 @@ namespace voxref::cli {
 
 struct ListOptions {
   std::string filter = "*";
+  std::string shard;  // "I/N" or empty
+  bool runnerControls = false;
 };
 int runList(const ListOptions& o);
 
@@ -21,6 +23,12 @@ struct ConformOptions {
   int threads = 0;
   bool allImages = false;
   std::string command;
+  int jobs = 1;
+  std::string shard;  // "I/N" or empty
+  double timeout = 300.0;
+  std::filesystem::path baseline;
+  bool inProcess = false;
+  bool runnerControls = false;
 };
 int runConform(const ConformOptions& o);
 
@@ -90,5 +98,28 @@ struct FixturesOptions {
   int threads = 0;
 };
 int runFixtures(const FixturesOptions& o);
+
+// One case with the user's fragment shader in place of its built-in stage
+// (docs/shader-interface.md): 0 pass, 1 fail, 2 usage, missing file, no such stage, or the shader
+// does not compile (the info log with the file's line numbers on stderr).
+struct CheckShaderOptions {
+  std::string caseId;
+  std::filesystem::path shader;
+  bool printInterface = false;  // print the stage's interface and built-in shader instead
+  std::string driver = "llvmpipe";
+  std::string profile = "auto";
+  std::filesystem::path out = "voxref-check-shader";
+  int threads = 0;
+  std::string command;
+};
+int runCheckShader(const CheckShaderOptions& o);
+
+// Driver fingerprinting (docs/probe.md): 0 a known profile matches the inferred fingerprint, 1 none
+// does, 2 usage or no GL context.
+struct ProbeOptions {
+  std::string driver = "llvmpipe";
+  std::filesystem::path out;  // optional JSON report, written atomically
+};
+int runProbe(const ProbeOptions& o);
 
 }  // namespace voxref::cli

@@ -24,6 +24,8 @@ int main(int argc, char** argv) {
   ListOptions list;
   auto* listCmd = app.add_subcommand("list", "every case id with one line on what it checks");
   listCmd->add_option("--filter", list.filter, "shell-style glob on case ids")->default_val("*");
+  listCmd->add_option("--shard", list.shard, "I/N: only the cases shard I of N runs (as conform --shard)");
+  listCmd->add_flag("--runner-controls", list.runnerControls, "also the runner's control cases (deliberate crash, abort, hang)");
 
   ConformOptions conform;
   auto* conformCmd = app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
@@ -33,6 +35,14 @@ int main(int argc, char** argv) {
   conformCmd->add_option("--out", conform.out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-report");
   conformCmd->add_option("--threads", conform.threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
   conformCmd->add_flag("--all-images", conform.allImages, "write images for every case, not only failing and warned ones");
+  conformCmd->add_option("--jobs,-j", conform.jobs, "case processes at once; results do not depend on it")->default_val(1);
+  conformCmd->add_option("--shard", conform.shard, "I/N: run only shard I of N of the selection (round robin, catalogue order)");
+  conformCmd->add_option("--timeout", conform.timeout, "seconds a case may take before it is killed and reported as timeout (0: none)")
+      ->default_val(300);
+  conformCmd->add_option("--baseline", conform.baseline, "an earlier results.json: report changes; exit 3 when a case regressed");
+  conformCmd->add_flag("--in-process", conform.inProcess, "run cases in this process, without isolation or time limit (for a debugger)");
+  conformCmd->add_flag("--runner-controls", conform.runnerControls,
+                       "add the runner's control cases (runner.control.*: deliberate driver crash, segfault, abort, exit, hang, exception)");
 
   RenderOptions render;
   auto* renderCmd = app.add_subcommand("render", "render one scene with one backend into an EXR image");
@@ -104,6 +114,21 @@ int main(int argc, char** argv) {
     sub->add_option("--isovalue", fixtures.isovalue, "isovalue for --volume (or to override the scene's)")->each([&fixtures](const std::string&) { fixtures.isovalueSet = true; });
   }
 
+  CheckShaderOptions checkShader;
+  auto* checkShaderCmd = app.add_subcommand("check-shader", "run one case with your fragment shader in place of the built-in stage");
+  checkShaderCmd->add_option("--case", checkShader.caseId, "case id from voxref list")->required();
+  checkShaderCmd->add_option("--shader", checkShader.shader, "your GLSL fragment shader, without #version (docs/shader-interface.md)");
+  checkShaderCmd->add_flag("--print-interface", checkShader.printInterface, "print the case's stage: its interface and the built-in shader");
+  checkShaderCmd->add_option("--driver", checkShader.driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
+  checkShaderCmd->add_option("--profile", checkShader.profile, "auto or a precision profile name")->default_val("auto");
+  checkShaderCmd->add_option("--out", checkShader.out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-check-shader");
+  checkShaderCmd->add_option("--threads", checkShader.threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
+
+  ProbeOptions probe;
+  auto* probeCmd = app.add_subcommand("probe", "infer the driver's precision from probe frames and match it to the known profiles");
+  probeCmd->add_option("--driver", probe.driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
+  probeCmd->add_option("--out", probe.out, "also write the fingerprint as JSON");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -121,6 +146,11 @@ int main(int argc, char** argv) {
     if (*decodeCmd) return runDecode(decode);
     if (*infoCmd) return runInfo(info);
     if (*fixturesCmd) return runFixtures(fixtures);
+    if (*probeCmd) return runProbe(probe);
+    if (*checkShaderCmd) {
+      checkShader.command = joinArgs(argc, argv);
+      return runCheckShader(checkShader);
+    }
   } catch (const std::exception& e) {
     std::cerr << "voxref: " << e.what() << "\n";
     return 2;

@@ -4,8 +4,11 @@
 #include <cmath>
 
 #include "conformance/case_context.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/io/image_io.h"
 #include "conformance/iso/iso_session.h"
 #include "conformance/iso/mesh_image_compare.h"
+#include "conformance/report/case_images.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
 #include "reference/iso/diamond_bounds.h"
@@ -15,6 +18,47 @@
 
 namespace voxref::conf {
 namespace {
+
+// The frame a case's report shows (images and magnified pixels): the one with the most failing
+// pixels, else the one whose depths come closest to their allowance.
+struct ShownFrame {
+  const IsoFrame* frame = nullptr;
+  std::size_t failures = 0;
+  MeshImageAgreement agreement;
+  void consider(const IsoFrame& f, const MeshImageAgreement& a) {
+    const std::size_t n = a.coverageFailures + a.depthFailures + a.visibilityFailures;
+    if (frame && (n < failures || (n == failures && a.maxDepthOverBound <= agreement.maxDepthOverBound))) return;
+    frame = &f;
+    failures = n;
+    agreement = a;
+  }
+};
+
+void showFrame(CaseContext& ctx, CaseResult& r, const ShownFrame& shown, bool writeImages) {
+  const IsoFrame& f = *shown.frame;
+  r.figures["shown_frame"] = f.frame;
+  for (const MeshPixel& p : shown.agreement.worst) {
+    PixelValues v{p.x, p.y, f.frame, "mesh_image", p.glDepth, std::nan(""), p.truthDepth, std::nullopt};
+    if (std::isfinite(p.allowance)) v.allowed = std::make_pair(p.planeDepth - p.allowance, p.planeDepth + p.allowance);
+    r.worstPixels.push_back(v);
+  }
+  if (!writeImages) return;
+  const std::size_t n = static_cast<std::size_t>(f.gl.width) * static_cast<std::size_t>(f.gl.height);
+  ref::Image glShade{f.gl.width, f.gl.height, std::vector<double>(n)}, truthShade{f.truth.width, f.truth.height, std::vector<double>(n)};
+  std::vector<PixelFlag> flags(n, PixelFlag::None);
+  for (std::size_t i = 0; i < n; ++i) {
+    glShade.pixels[i] = (f.gl.rgba[i][0] + f.gl.rgba[i][1] + f.gl.rgba[i][2]) / (3.0 * 255.0);
+    truthShade.pixels[i] = f.truth.shade[i];
+    if (shown.agreement.failure[i] != MeshPixelFailure::None) flags[i] = PixelFlag::EnvelopeFail;
+  }
+  io::ensureDirectory(ctx.outDir() / "images");
+  r.images.rendered = caseImageName(r.id, "rendered");
+  io::writePng(ctx.outDir() / r.images.rendered, grayPreview(glShade, 1.0));
+  r.images.reference = caseImageName(r.id, "reference");
+  io::writePng(ctx.outDir() / r.images.reference, grayPreview(truthShade, 1.0));
+  r.images.errorMask = caseImageName(r.id, "error_mask");
+  io::writePng(ctx.outDir() / r.images.errorMask, errorMaskPreview(glShade, 1.0, flags));
+}
 
 CaseResult notRun(CaseResult r, const std::string& why) {
   r.status = Status::Skip;
@@ -40,8 +84,10 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
   std::size_t coverageFail = 0, depthFail = 0, visibilityFail = 0, otherAllowed = 0, same = 0;
   double worstOverBound = 0.0, worstDepth = 0.0;
   nlohmann::json perFrame = nlohmann::json::array();
+  ShownFrame shown;
   for (const IsoFrame& f : frames) {
     const MeshImageAgreement a = compareMeshImages(f.mesh, f.gl, f.truth, f.camera);
+    shown.consider(f, a);
     falseCulls += f.falseCulls;
     culledInvisible += f.culledInvisible;
     invisible += f.invisibleCandidates;
@@ -102,6 +148,7 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
     r.oracles.push_back({"empty", triangles == 0 ? Verdict::Pass : Verdict::Fail,
                          std::to_string(triangles) + " triangles for an isovalue outside the data range", {}});
   r.status = statusFromOracles(r.oracles);
+  if (shown.frame) showFrame(ctx, r, shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
   return r;
 }
 

@@ -8,6 +8,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "conformance/case.h"
+#include "conformance/report/worst_samples.h"
+
 namespace voxref::conf {
 namespace {
 
@@ -82,6 +85,18 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
     s.normal = glm::cross(v[1] - v[0], v[2] - v[0]);
   }
   MeshImageAgreement a;
+  const std::size_t count = static_cast<std::size_t>(gl.width) * static_cast<std::size_t>(gl.height);
+  a.failure.assign(count, MeshPixelFailure::None);
+  std::vector<MeshPixel> judged(count);
+  // Ranking for `worst`: failures by how far beyond the allowance (at least 1), agreeing pixels
+  // by the share of the allowance they use.
+  std::vector<double> failScore(count, 0.0), passScore(count, 0.0);
+  auto fail = [&](std::size_t i, MeshPixelFailure f, std::size_t& counter) {
+    ++counter;
+    a.failure[i] = judged[i].failure = f;
+    const double over = std::fabs(judged[i].glDepth - judged[i].planeDepth) / judged[i].allowance;
+    failScore[i] = std::isfinite(over) ? std::max(over, 1.0) : 1.0;
+  };
   for (int y = 0; y < gl.height; ++y)
     for (int x = 0; x < gl.width; ++x) {
       const std::size_t i = static_cast<std::size_t>(x) + static_cast<std::size_t>(gl.width) * static_cast<std::size_t>(y);
@@ -89,8 +104,10 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
       const glm::dvec2 c(x + 0.5, y + 0.5);
       const bool hasG = gl.primitive[i] != 0, hasE = truth.primitive[i] != fx::kNoHit;
       const std::size_t g = hasG ? gl.primitive[i] - 1 : 0, e = hasE ? truth.primitive[i] : 0;
+      judged[i] = {x, y, MeshPixelFailure::None, hasG ? eyeDepthOfWindowDepth(camera, gl.windowDepth[i]) : std::nan(""),
+                   static_cast<double>(truth.depth[i]), std::nan(""), std::nan("")};
       if ((hasG && g >= tris.size()) || (hasE && e >= tris.size())) {
-        ++a.coverageFailures;  // an id that is not a triangle of the mesh
+        fail(i, MeshPixelFailure::Coverage, a.coverageFailures);  // an id that is not a triangle of the mesh
         continue;
       }
       if ((hasG && !tris[g].projectable) || (hasE && !tris[e].projectable)) continue;  // crosses the eye plane: not judged
@@ -99,21 +116,24 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
       if (hasG) {
         const double coverG = coverage(tris[g], c);
         if (coverG < -kSnapPixels) {
-          ++a.coverageFailures;
+          fail(i, MeshPixelFailure::Coverage, a.coverageFailures);
           continue;
         }
         zG = planeDepth(tris[g], camera, c);
         const double wd = gl.windowDepth[i];
         const double ulp = static_cast<double>(std::nextafter(static_cast<float>(wd), 2.0f)) - static_cast<float>(wd);
-        const double zGl = eyeDepthOfWindowDepth(camera, wd);
+        const double zGl = judged[i].glDepth;
         const double slope = std::hypot(planeDepth(tris[g], camera, c + glm::dvec2(1, 0)) - zG, planeDepth(tris[g], camera, c + glm::dvec2(0, 1)) - zG);
         allowance = 8.0 * std::fabs(eyeDepthOfWindowDepth(camera, wd + ulp) - zGl) + kSnapPixels * (std::isfinite(slope) ? slope : kInf) +
                     0x1p-20 * std::fabs(zG);
+        judged[i].planeDepth = zG;
+        judged[i].allowance = allowance;
         const double diff = std::fabs(zGl - zG);
         a.maxDepthDifference = std::max(a.maxDepthDifference, diff);
         a.maxDepthOverBound = std::max(a.maxDepthOverBound, diff / allowance);
+        passScore[i] = diff / allowance;
         if (diff > allowance) {
-          ++a.depthFailures;
+          fail(i, MeshPixelFailure::Depth, a.depthFailures);
           continue;
         }
         if (hasE && g == e) {
@@ -125,15 +145,18 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
           const bool inFront = zG <= zE + allowance;
           const bool marginalOrCoincident = coverG <= kSnapPixels || std::fabs(zG - zE) <= allowance;
           if (!inFront || !marginalOrCoincident) {
-            ++a.visibilityFailures;
+            fail(i, MeshPixelFailure::Visibility, a.visibilityFailures);
             continue;
           }
         }
         ++a.otherTriangleAllowed;
         continue;
       }
-      if (hasE && coverE > kSnapPixels) ++a.coverageFailures;  // GL left empty a pixel Embree's triangle surely covers
+      if (hasE && coverE > kSnapPixels) fail(i, MeshPixelFailure::Coverage, a.coverageFailures);  // GL left empty a pixel Embree's triangle surely covers
     }
+  for (std::size_t i : largestScores(failScore, kMaxWorstPixels)) a.worst.push_back(judged[i]);
+  for (std::size_t i : largestScores(passScore, kMaxWorstPixels))
+    if (a.worst.size() < kMaxWorstPixels && a.failure[i] == MeshPixelFailure::None) a.worst.push_back(judged[i]);
   return a;
 }
 

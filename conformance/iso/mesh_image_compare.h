@@ -23,6 +23,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "fixtures/raycast/ray_image.h"
 #include "gpu/iso_gl.h"
@@ -33,7 +35,22 @@ namespace voxref::conf {
 
 inline constexpr double kSnapPixels = 1.0 / 64.0;
 
+enum class MeshPixelFailure : std::uint8_t { None = 0, Coverage = 1, Depth = 2, Visibility = 3 };
+
+// One judged pixel, for the report's magnified view: GL's eye depth (NaN where GL drew nothing),
+// Embree's (+infinity on a miss), and the depth allowance around the plane of GL's triangle.
+struct MeshPixel {
+  int x = 0, y = 0;
+  MeshPixelFailure failure = MeshPixelFailure::None;
+  double glDepth = 0.0, truthDepth = 0.0;
+  double planeDepth = 0.0, allowance = 0.0;  // NaN where GL drew nothing or its triangle was not reached
+};
+
 struct MeshImageAgreement {
+  std::vector<MeshPixelFailure> failure;  // per pixel, x + width * y (row 0 at the bottom)
+  // At most kMaxWorstPixels: failures first (depth failures farthest beyond their allowance
+  // first), then the drawn pixels whose depth difference uses most of its allowance.
+  std::vector<MeshPixel> worst;
   std::size_t pixels = 0, sameTriangle = 0, otherTriangleAllowed = 0;
   std::size_t coverageFailures = 0, depthFailures = 0, visibilityFailures = 0;
   double maxDepthDifference = 0.0;  // eye units, GL depth against its own triangle's plane

@@ -1,5 +1,6 @@
 #include "conformance/report/results_json.h"
 
+#include <cmath>
 #include <map>
 
 namespace voxref::conf {
@@ -15,11 +16,20 @@ nlohmann::json caseJson(const CaseResult& r) {
   if (!r.images.emulated.empty()) images["emulated"] = r.images.emulated;
   if (!r.images.reference.empty()) images["reference"] = r.images.reference;
   if (!r.images.errorMask.empty()) images["error_mask"] = r.images.errorMask;
+  nlohmann::json worst = nlohmann::json::array();
+  for (const PixelValues& p : r.worstPixels) {
+    auto num = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
+    nlohmann::json w = {{"x", p.x}, {"y", p.y}, {"k", p.k}, {"oracle", p.oracle},
+                        {"gl", num(p.gl)}, {"emulated", num(p.emulated)}, {"reference", num(p.reference)}};
+    if (p.allowed) w["allowed"] = {p.allowed->first, p.allowed->second};
+    worst.push_back(w);
+  }
   return {{"id", r.id},
           {"system", r.system},
           {"description", r.description},
           {"status", name(r.status)},
           {"message", r.message},
+          {"stderr", r.stderrText},
           {"oracles", oracles},
           {"effects", r.effects},
           {"findings", findings},
@@ -27,7 +37,8 @@ nlohmann::json caseJson(const CaseResult& r) {
           {"seconds_gl", r.secondsGl},
           {"seconds_emulation", r.secondsEmulation},
           {"seconds_reference", r.secondsReference},
-          {"images", images}};
+          {"images", images},
+          {"worst_pixels", worst}};
 }
 
 nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& results) {
@@ -43,6 +54,11 @@ nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& re
           {"started", run.started},
           {"finished", run.finished},
           {"complete", run.complete},
+          {"running", run.running},
+          {"interrupted_by", run.interruptedBy.empty() ? nlohmann::json(nullptr) : nlohmann::json(run.interruptedBy)},
+          {"not_run", run.notRun},
+          {"execution", run.execution},
+          {"baseline", run.baseline},
           {"driver", run.driver},
           {"summary", counts},
           {"cases", cases}};

@@ -7,6 +7,7 @@
 #include "conformance/compare.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/report/case_images.h"
+#include "conformance/report/worst_samples.h"
 #include "conformance/sparsegrid/prepared_scene.h"
 #include "emulation/combination_envelope.h"
 #include "gpu/combination_gl.h"
@@ -19,19 +20,24 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-void judgeEnvelope(CombinationPlanes& r, const ref::CombinationTextures& textures, int threads) {
-  const ref::CodePlanes& judged = r.gl ? *r.gl : r.emulated->planes;
+const ref::CodePlanes& envelopeJudged(const CombinationPlanes& r) { return r.gl ? *r.gl : r.emulated->planes; }
+
+// Also returns, per sample, how far the judged value lies outside the pass envelope (0 inside).
+std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEnvelope& envelope, int threads) {
+  const ref::CodePlanes& judged = envelopeJudged(r);
   r.envelopeJudged = r.gl ? "gl" : "emulation";
-  const emu::CombinationEnvelope envelope(textures, r.frame, r.scene.sampler, judged.format);
   r.envelopeThreshold = envelope.colourThreshold();
   r.envelope.assign(judged.codes.size(), 0);
+  std::vector<double> excess(judged.codes.size(), 0.0);
   const int w = r.frame.width, h = r.frame.height;
   ref::parallelFor(r.frame.planes, threads, [&](int k) {
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
         const std::size_t idx = static_cast<std::size_t>(i) + static_cast<std::size_t>(w) * (j + static_cast<std::size_t>(h) * k);
         const double v = ref::decodeFramebufferCode(judged.format, judged.codes[idx]);
-        if (envelope.at(i, j, k, emu::kEnvelopePass).contains(v)) continue;
+        const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
+        if (pass.contains(v)) continue;
+        excess[idx] = v < pass.lo ? pass.lo - v : v - pass.hi;
         r.envelope[idx] = envelope.at(i, j, k, emu::kEnvelopeQualityWarning).contains(v) ? 1 : 2;
       }
   });
@@ -44,6 +50,56 @@ void judgeEnvelope(CombinationPlanes& r, const ref::CombinationTextures& texture
     r.envelopeFailures.push_back({{"sample", {i, j, k}},
                                   {"value", ref::decodeFramebufferCode(judged.format, judged.codes[idx])},
                                   {"allowed", {pass.lo, pass.hi}}});
+  }
+  return excess;
+}
+
+// CombinationPlanes::worst; `excess` from judgeEnvelope (empty when no envelope ran).
+void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* envelope, const std::vector<double>& excess) {
+  const std::size_t n = r.reference.values.size();
+  std::vector<std::vector<std::size_t>> wrong;
+  if (r.gl && r.emulated) {
+    const CodeComparison c = compareCodes(*r.gl, r.emulated->planes, &r.emulated->unmodelled);
+    std::vector<double> distance(n, 0.0);
+    for (std::size_t s = 0; s < c.mask.size(); ++s)
+      if (c.mask[s]) distance[s] = static_cast<double>(codeDistance(r.gl->format, r.gl->codes[s], r.emulated->planes.codes[s]));
+    wrong.push_back(largestScores(distance, kMaxWorstPixels));
+  }
+  std::vector<double> failing(n, 0.0), warned(n, 0.0);
+  for (std::size_t s = 0; s < excess.size(); ++s) (r.envelope[s] == 2 ? failing : warned)[s] = excess[s];
+  wrong.push_back(largestScores(failing, kMaxWorstPixels));
+  std::vector<std::size_t> chosen = interleaveRanked(wrong, kMaxWorstPixels);
+  if (chosen.size() < kMaxWorstPixels)
+    for (std::size_t s : largestScores(warned, kMaxWorstPixels))
+      if (chosen.size() < kMaxWorstPixels && std::find(chosen.begin(), chosen.end(), s) == chosen.end()) chosen.push_back(s);
+
+  const ref::CodePlanes* gl = r.gl ? &*r.gl : nullptr;
+  const ref::CodePlanes* emulated = r.emulated ? &r.emulated->planes : nullptr;
+  auto value = [&](const ref::CodePlanes* p, std::size_t s) {
+    return p ? r.readbackScale * ref::decodeFramebufferCode(p->format, p->codes[s]) : std::nan("");
+  };
+  if (chosen.empty()) {  // nothing wrong: the largest distances from the reference
+    std::vector<double> error(n, 0.0);
+    if (const ref::CodePlanes* judged = gl ? gl : emulated)
+      for (std::size_t s = 0; s < n; ++s) error[s] = std::fabs(value(judged, s) - r.reference.values[s]);
+    chosen = largestScores(error, kMaxWorstPixels);
+  }
+  const std::size_t w = static_cast<std::size_t>(r.frame.width), h = static_cast<std::size_t>(r.frame.height);
+  r.worst.clear();
+  for (std::size_t s : chosen) {
+    PixelValues p;
+    p.x = static_cast<int>(s % w), p.y = static_cast<int>((s / w) % h), p.k = static_cast<int>(s / (w * h));
+    const bool unmodelled = r.emulated && s < r.emulated->unmodelled.size() && r.emulated->unmodelled[s];
+    const bool mismatch = gl && emulated && gl->codes[s] != emulated->codes[s] && !unmodelled;
+    p.oracle = mismatch ? "exact" : s < r.envelope.size() && r.envelope[s] != 0 ? "envelope" : "ideal";
+    p.gl = value(gl, s);
+    p.emulated = value(emulated, s);
+    p.reference = r.reference.values[s];
+    if (envelope) {
+      const emu::Interval pass = envelope->at(p.x, p.y, p.k, emu::kEnvelopePass);
+      p.allowed = std::make_pair(r.readbackScale * pass.lo, r.readbackScale * pass.hi);
+    }
+    r.worst.push_back(p);
   }
 }
 
@@ -121,15 +177,22 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
   } else {
     try {
       t0 = Clock::now();
-      r->gl = gpu::renderCombinationGl(*ctx.gl(), textures, r->frame, scene.sampler, scene.framebuffer, {scene.flushEachPass});
+      r->gl = gpu::renderCombinationGl(*ctx.gl(), textures, r->frame, scene.sampler, scene.framebuffer,
+                                        {scene.flushEachPass, ctx.shaderOverride()});
       r->secondsGl = secondsSince(t0);
     } catch (const gpu::GlUnsupported& e) {
       r->glNotRun = e.what();
     }
   }
 
-  if (r->gl || r->emulated) judgeEnvelope(*r, textures, threads);
+  std::optional<emu::CombinationEnvelope> envelope;
+  std::vector<double> excess;
+  if (r->gl || r->emulated) {
+    envelope.emplace(textures, r->frame, scene.sampler, envelopeJudged(*r).format);
+    excess = judgeEnvelope(*r, *envelope, threads);
+  }
   if (r->gl && profile) findDepartures(*r, textures, *profile, threads);
+  pickWorstSamples(*r, envelope ? &*envelope : nullptr, excess);
   return r;
 }
 
@@ -275,6 +338,7 @@ CaseResult judgeCombination(CaseContext& ctx, const std::string& id, const std::
   result.description = description;
   result.effects = r->effects;
   result.findings = r->departures;
+  result.worstPixels = r->worst;
   result.secondsGl = r->secondsGl;
   result.secondsEmulation = r->secondsEmulation;
   result.secondsReference = r->secondsReference;

@@ -51,6 +51,11 @@ struct CombinationPlanes {
   // Envelope failures and warnings at samples that no departure changes: a finding the model of
   // the driver does not explain.
   std::size_t unexplainedFail = 0, unexplainedWarn = 0;
+  // The samples the report magnifies (CaseResult::worstPixels), in data units (codes decoded
+  // times the read-back scale, as the reference): exact mismatches (largest code distance) and
+  // envelope failures (farthest outside) taken in turn, then quality warnings; when nothing is
+  // wrong, the largest distances from the reference.
+  std::vector<PixelValues> worst;
   double secondsGl = 0.0, secondsEmulation = 0.0, secondsReference = 0.0;
 };
 

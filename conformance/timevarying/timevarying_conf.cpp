@@ -7,6 +7,7 @@
 #include "conformance/io/atomic_file.h"
 #include "conformance/report/case_images.h"
 #include "conformance/timevarying/fetch_classification.h"
+#include "conformance/timevarying/timevarying_envelope_conf.h"
 #include "emulation/framebuffer_emu.h"
 #include "emulation/timevarying_emu.h"
 #include "reference/timevarying/plume.h"
@@ -62,15 +63,25 @@ io::Rgb8Image rgbPreview(const ref::RgbaStack& s, int plane) {
   return img;
 }
 
-// Error mask: red where GL and emulation differ, magenta where GL differs from the exact decoder.
-io::Rgb8Image maskPreview(const ref::RgbaStack& gl, const ref::RgbaStack& emu, const ref::RgbaStack& exact, int plane) {
-  io::Rgb8Image img = rgbPreview(gl, plane);
-  for (int j = 0; j < gl.height; ++j)
-    for (int i = 0; i < gl.width; ++i) {
-      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(gl.width) * (gl.height - 1 - j))];
-      for (int c = 0; c < 3; ++c) px[c] = static_cast<std::uint8_t>(px[c] / 3);
-      if (gl.at(i, j, plane) != emu.at(i, j, plane)) px[0] = 255, px[1] = 0, px[2] = 0;
-      else if (gl.at(i, j, plane) != exact.at(i, j, plane)) px[0] = 255, px[1] = 0, px[2] = 255;
+// Error mask of the first step (case_images.h colours, every plane collapsed onto its pixel): red
+// where GL and emulation differ, magenta outside the envelope, yellow only inside the quality-warning
+// envelope; blue where no oracle flags the pixel but the judged colour differs from the exact decoder
+// (the paper's traps); elsewhere the shown plane's luminance, dimmed.
+io::Rgb8Image maskPreview(const ref::RgbaStack& judged, const ref::RgbaStack& exact, int plane, const std::vector<PixelFlag>& flags) {
+  ref::Image base{judged.width, judged.height, std::vector<double>(static_cast<std::size_t>(judged.width) * judged.height)};
+  for (int j = 0; j < judged.height; ++j)
+    for (int i = 0; i < judged.width; ++i) {
+      const ref::Rgba8& c = judged.at(i, j, plane);
+      base.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * j] = (0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]) / 255.0;
+    }
+  io::Rgb8Image img = errorMaskPreview(base, 1.0, flags);
+  for (int j = 0; j < judged.height; ++j)
+    for (int i = 0; i < judged.width; ++i) {
+      if (flags[static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * j] != PixelFlag::None) continue;
+      bool differs = false;
+      for (int k = 0; k < judged.planes && !differs; ++k) differs = judged.at(i, j, k) != exact.at(i, j, k);
+      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * (judged.height - 1 - j))];
+      if (differs) px[0] = 40, px[1] = 90, px[2] = 255;
     }
   return img;
 }
@@ -125,12 +136,15 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   departureChanges.assign(departures.size(), 0);
   std::string glNotRun;
   std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;
+  TimeVaryingEnvelopeOracle envelopeOracle(tex, scene.decoder, frame, scene.composite);
+  std::vector<PixelFlag> flags(static_cast<std::size_t>(frame.width) * frame.height, PixelFlag::None);
   const std::vector<int> steps = stepsOf(scene);
   for (int step : steps) {
     std::optional<ref::RgbaStack> gl;
     if (ctx.gl() && glNotRun.empty()) try {
         t0 = Clock::now();
-        gl = scene.composite ? gpu::compositeGl(*ctx.gl(), tex, scene.decoder, step, frame) : gpu::decodePlanesGl(*ctx.gl(), tex, scene.decoder, step, frame);
+        gl = scene.composite ? gpu::compositeGl(*ctx.gl(), tex, scene.decoder, step, frame, {}, ctx.shaderOverride())
+                             : gpu::decodePlanesGl(*ctx.gl(), tex, scene.decoder, step, frame, {}, ctx.shaderOverride());
         result.secondsGl += secondsSince(t0);
       } catch (const gpu::GlUnsupported& e) {
         glNotRun = e.what();
@@ -189,6 +203,7 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
         }
       }
     if (scene.composite && judged) samples += judged->colours.size();
+    envelopeOracle.add(step, gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, ctx.threads(), firstExact ? nullptr : &flags);
     if (!firstExact) {
       firstExact = reference;
       if (gl) firstGl = gl;
@@ -236,7 +251,8 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
     ideal.summary = std::to_string(wrongColours) + " of " + std::to_string(samples) + " samples decode another colour than the exact decoder" +
                     (wrongColours ? " (max channel difference " + std::to_string(maxIdealDiff) + ")" : "");
   }
-  OracleResult envelope{"envelope", Verdict::NotRun, "no envelope model for the time-varying decoders yet (docs/timevarying.md)", nlohmann::json::object()};
+  const OracleResult envelope = envelopeOracle.result();
+  result.worstPixels = envelopeOracle.worstPixels();
   result.oracles = {exact, envelope, fetch, ideal};
   result.status = statusFromOracles(result.oracles);
   if (!glNotRun.empty() && ctx.gl()) {
@@ -259,9 +275,9 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
     if (firstGl) write(*firstGl, "rendered", result.images.rendered);
     if (firstEmu) write(*firstEmu, "emulated", result.images.emulated);
     write(*firstExact, "reference", result.images.reference);
-    if (firstGl && firstEmu) {
+    if (firstGl || firstEmu) {
       result.images.errorMask = caseImageName(id, "error_mask");
-      io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(*firstGl, *firstEmu, *firstExact, plane));
+      io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(firstGl ? *firstGl : *firstEmu, *firstExact, plane, flags));
     }
   }
   return result;

@@ -10,7 +10,9 @@
 //   ideal   the GL colours against the exact decoder (decode planes), or the composited image
 //           against the exact colours composited in real arithmetic (max channel difference in
 //           LSB, RMSE).
-// The envelope oracle is not run for this system yet (docs/timevarying.md says why).
+//   envelope the GL read-back (the emulation's without GL) against what any conforming implementation
+//           may produce (emulation/timevarying_envelope.h, timevarying_envelope_conf.h): pass, quality
+//           warning or fail per sample, the allowed codes listed for every failure.
 #pragma once
 
 #include <string>

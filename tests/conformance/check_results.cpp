@@ -5,35 +5,78 @@
 // --require-explained-envelope: every envelope failure or warning lies at a sample that a named
 //   departure of the driver's profile changes (figures unexplained_failures/warnings are 0).
 // --expect-finding ID: the finding changes samples in at least one case.
+// --expect-status ID=STATUS: the case ran and has that status (crash, timeout, ...); the
+//   incomplete-run and crash checks then apply to the other cases only.
+// --expect-stderr ID=TEXT: the case's kept stdout/stderr contains TEXT.
+// --expect-interrupted: the run is marked incomplete, names its signal, lists the cases not run,
+//   and every listed case ran to a status.
+// --same-results-as OTHER.json: every case has the same status, message, oracles, effects,
+//   findings, figures and worst pixels as in OTHER (times, stderr and the run's own fields such
+//   as the command and --jobs aside), and every image file both name is the same, byte for byte.
+// --expect-regressed ID / --expect-fixed ID: the "baseline" block lists the case so.
 // Prints every violation; exits 1 if there is any, 2 on bad usage or an unreadable file.
+#include <filesystem>
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+namespace {
+
+bool readJson(const std::string& file, nlohmann::json& out) {
+  std::ifstream in(file);
+  if (!in) {
+    std::cerr << "check_results: cannot read " << file << "\n";
+    return false;
+  }
+  try {
+    out = nlohmann::json::parse(in);
+  } catch (const std::exception& e) {
+    std::cerr << "check_results: " << file << " is not JSON: " << e.what() << "\n";
+    return false;
+  }
+  return true;
+}
+
+std::string fileBytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return in ? s.str() : std::string("\x01missing");
+}
+
+// A case without what may differ between equal runs.
+nlohmann::json stable(nlohmann::json c) {
+  for (const char* k : {"seconds_gl", "seconds_emulation", "seconds_reference", "stderr"}) c.erase(k);
+  return c;
+}
+
+std::pair<std::string, std::string> splitAt(const std::string& s) {
+  const auto eq = s.find('=');
+  return {s.substr(0, eq), eq == std::string::npos ? std::string() : s.substr(eq + 1)};
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::cerr << "usage: check_results results.json [options]\n";
     return 2;
   }
-  std::ifstream in(argv[1]);
-  if (!in) {
-    std::cerr << "check_results: cannot read " << argv[1] << "\n";
-    return 2;
-  }
   nlohmann::json r;
-  try {
-    r = nlohmann::json::parse(in);
-  } catch (const std::exception& e) {
-    std::cerr << "check_results: " << argv[1] << " is not JSON: " << e.what() << "\n";
-    return 2;
-  }
+  if (!readJson(argv[1], r)) return 2;
   std::string profile;
   bool exactPass = false, noFail = false, explained = false;
   std::vector<std::string> findings;
   std::size_t minCases = 1;
+  std::map<std::string, std::string> expectStatus, expectStderr;
+  std::vector<std::string> expectRegressed, expectFixed;
+  bool expectInterrupted = false;
+  std::string sameAs;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--profile" && i + 1 < argc) profile = argv[++i];
@@ -42,6 +85,12 @@ int main(int argc, char** argv) {
     else if (a == "--require-explained-envelope") explained = true;
     else if (a == "--expect-finding" && i + 1 < argc) findings.push_back(argv[++i]);
     else if (a == "--min-cases" && i + 1 < argc) minCases = std::stoul(argv[++i]);
+    else if (a == "--expect-status" && i + 1 < argc) expectStatus.insert(splitAt(argv[++i]));
+    else if (a == "--expect-stderr" && i + 1 < argc) expectStderr.insert(splitAt(argv[++i]));
+    else if (a == "--expect-interrupted") expectInterrupted = true;
+    else if (a == "--same-results-as" && i + 1 < argc) sameAs = argv[++i];
+    else if (a == "--expect-regressed" && i + 1 < argc) expectRegressed.push_back(argv[++i]);
+    else if (a == "--expect-fixed" && i + 1 < argc) expectFixed.push_back(argv[++i]);
     else {
       std::cerr << "check_results: unknown option " << a << "\n";
       return 2;
@@ -52,7 +101,13 @@ int main(int argc, char** argv) {
     ++violations;
     std::cout << "VIOLATION: " << what << "\n";
   };
-  if (!r.value("complete", false)) violation("the run is marked incomplete");
+  if (expectInterrupted) {
+    if (r.value("complete", true)) violation("the run is not marked incomplete");
+    if (!r["interrupted_by"].is_string()) violation("the run does not name the signal that interrupted it");
+    if (r["not_run"].empty()) violation("the interrupted run lists no case as not run");
+  } else if (!r.value("complete", false)) {
+    violation("the run is marked incomplete");
+  }
   const auto& cases = r["cases"];
   if (cases.size() < minCases) violation("only " + std::to_string(cases.size()) + " cases ran");
   if (!profile.empty() && r["driver"]["profile"]["name"] != profile)
@@ -62,6 +117,16 @@ int main(int argc, char** argv) {
     const std::string id = c["id"];
     const std::string status = c["status"];
     if (noFail && (status == "fail" || status == "crash" || status == "timeout")) violation(id + " is " + status + ": " + c["message"].get<std::string>());
+    if (const auto want = expectStatus.find(id); want != expectStatus.end()) {
+      if (status != want->second) violation(id + " is " + status + ", expected " + want->second + ": " + c["message"].get<std::string>());
+      expectStatus.erase(want);
+      if (const auto text = expectStderr.find(id); text != expectStderr.end()) {
+        if (c.value("stderr", "").find(text->second) == std::string::npos)
+          violation(id + ": stderr kept does not contain '" + text->second + "': " + c.value("stderr", "").substr(0, 300));
+        expectStderr.erase(text);
+      }
+      continue;
+    }
     if (status == "crash") violation(id + " crashed: " + c["message"].get<std::string>());
     const auto& oracles = c["oracles"];
     if (exactPass && oracles.contains("exact") && oracles["exact"]["verdict"] != "not_run") {
@@ -85,6 +150,39 @@ int main(int argc, char** argv) {
       for (const auto& f : c["findings"])
         if (f["id"] == want && f["figures"].value("samples_changed", 0) > 0) seen = true;
     if (!seen) violation("finding " + want + " changed no sample in any case");
+  }
+  for (const auto& [id, status] : expectStatus) violation(id + " did not run (expected " + status + ")");
+  for (const auto& [id, text] : expectStderr) violation(id + ": --expect-stderr needs --expect-status for the same case");
+  auto listed = [&](const char* list, const std::string& id) {
+    if (!r["baseline"].is_object()) return false;
+    for (const auto& c : r["baseline"][list])
+      if (c["id"] == id) return true;
+    return false;
+  };
+  for (const std::string& id : expectRegressed)
+    if (!listed("newly_failing", id) && !listed("newly_warning", id)) violation(id + " is not listed as regressed against the baseline");
+  for (const std::string& id : expectFixed)
+    if (!listed("fixed", id)) violation(id + " is not listed as fixed against the baseline");
+  if (!sameAs.empty()) {
+    nlohmann::json other;
+    if (!readJson(sameAs, other)) return 2;
+    const auto& otherCases = other["cases"];
+    if (otherCases.size() != cases.size()) violation("the runs hold " + std::to_string(cases.size()) + " and " + std::to_string(otherCases.size()) + " cases");
+    const std::filesystem::path here = std::filesystem::path(argv[1]).parent_path(), there = std::filesystem::path(sameAs).parent_path();
+    std::size_t images = 0;
+    for (std::size_t i = 0; i < std::min(cases.size(), otherCases.size()); ++i) {
+      const nlohmann::json a = stable(cases[i]), b = stable(otherCases[i]);
+      if (a != b) {
+        violation(a["id"].get<std::string>() + " differs from " + b["id"].get<std::string>() + " in " + sameAs);
+        continue;
+      }
+      for (const auto& [kind, file] : a["images"].items()) {
+        ++images;
+        if (fileBytes(here / file.get<std::string>()) != fileBytes(there / file.get<std::string>()))
+          violation(a["id"].get<std::string>() + ": image " + file.get<std::string>() + " differs between the runs");
+      }
+    }
+    std::cout << "check_results: compared with " << sameAs << ": " << images << " image file(s) compared byte for byte\n";
   }
   std::cout << "check_results: " << cases.size() << " cases, " << exactRan << " with the exact oracle, " << violations << " violation(s)\n";
   return violations ? 1 : 0;

@@ -1,0 +1,28 @@
+#include "conformance/cli/case_selection.h"
+
+#include <stdexcept>
+
+#include "conformance/catalog.h"
+#include "conformance/controls/runner_controls.h"
+#include "conformance/runner.h"
+
+namespace voxref::cli {
+
+std::vector<conf::Case> catalogue(bool runnerControls) {
+  if (!runnerControls) return conf::allCases();
+  // First, so that every selected built-in case runs after them: proof that the run goes on.
+  std::vector<conf::Case> cases = conf::runnerControlCases();
+  for (conf::Case& c : conf::allCases()) cases.push_back(std::move(c));
+  return cases;
+}
+
+std::optional<conf::Shard> shardOption(const std::string& text) {
+  if (text.empty()) return std::nullopt;
+  try {
+    return conf::parseShard(text);
+  } catch (const std::invalid_argument& e) {
+    throw conf::UsageError(e.what());
+  }
+}
+
+}  // namespace voxref::cli

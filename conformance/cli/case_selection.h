@@ -1,0 +1,19 @@
+// What `voxref list` and `voxref conform` choose cases from, and their --shard option.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "conformance/case.h"
+#include "conformance/shard.h"
+
+namespace voxref::cli {
+
+// The built-in catalogue, after the runner's control cases (runner_controls.h) when asked for.
+std::vector<conf::Case> catalogue(bool runnerControls);
+
+// nullopt for an empty option; conf::UsageError for a malformed one.
+std::optional<conf::Shard> shardOption(const std::string& text);
+
+}  // namespace voxref::cli

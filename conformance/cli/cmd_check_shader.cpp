@@ -1,0 +1,124 @@
+// voxref check-shader: one case with the user's fragment shader in place of the built-in stage,
+// judged by the case's own oracles (docs/shader-interface.md).
+#include <iostream>
+
+#include "conformance/case_context.h"
+#include "conformance/catalog.h"
+#include "conformance/cli/commands.h"
+#include "conformance/driver_info.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/report/report_files.h"
+#include "conformance/runner.h"
+#include "conformance/sparsegrid/sparsegrid_scene.h"
+#include "conformance/timevarying/timevarying_scene.h"
+#include "gpu/gl_error.h"
+#include "gpu/shader_override.h"
+
+namespace voxref::cli {
+namespace {
+
+const conf::Case& findCase(const std::vector<conf::Case>& cases, const std::string& id) {
+  for (const conf::Case& c : cases)
+    if (c.id == id) return c;
+  throw conf::UsageError("unknown case '" + id + "' (voxref list shows the cases)");
+}
+
+// The stage the case runs on GL, from its scene as `voxref render` reads it.
+const gpu::ShaderStage& stageOf(const conf::Case& c) {
+  const std::string none = "case " + c.id + " has no shader stage a user can replace";
+  if (!c.scene) throw conf::UsageError(none + " (it renders no single scene; docs/shader-interface.md lists the stages)");
+  if (c.scene->value("system", "sparsegrid") == "timevarying") return gpu::decoderStage(conf::parseTimeVaryingScene(*c.scene).decoder);
+  const conf::SparseGridScene scene = conf::parseSparseGridScene(*c.scene);
+  if (!ref::existsInGl(scene.framebuffer))
+    throw conf::UsageError(none + " (GL has no " + std::string(ref::name(scene.framebuffer)) + " colour buffer: emulated only)");
+  return gpu::combinationStage();
+}
+
+int printInterface(const conf::Case& c, const gpu::ShaderStage& stage) {
+  std::cout << "case " << c.id << " runs stage `" << stage.name << "` (built-in gpu/shaders/" << stage.fragmentFile << ")\n\n"
+            << gpu::commonInterface() << "\n\n"
+            << gpu::stageInterface(stage) << "\n\n// ---- built-in " << stage.fragmentFile << ", a starting point ----\n"
+            << stage.fragmentSource;
+  return 0;
+}
+
+void printResult(const conf::CaseResult& r, const gpu::ShaderOverride& shader) {
+  std::cout << "case " << r.id << " with " << shader.fileName << " as `" << shader.stage << "`\n";
+  for (const conf::OracleResult& o : r.oracles)
+    std::cout << "  " << o.oracle << std::string(o.oracle.size() < 9 ? 9 - o.oracle.size() : 1, ' ') << conf::name(o.verdict) << "  "
+              << o.summary << "\n";
+  std::cout << "status: " << conf::name(r.status) << (r.message.empty() ? "" : ": " + r.message) << "\n";
+}
+
+void writeReport(const CheckShaderOptions& o, const conf::RunInfo& run, const std::vector<conf::CaseResult>& results) {
+  conf::writeReportFiles(o.out, run, results);
+  std::cout << "report: " << (o.out / "index.html").string() << " (results.json, junit.xml beside it)\n";
+}
+
+}  // namespace
+
+int runCheckShader(const CheckShaderOptions& o) {
+  const std::vector<conf::Case> cases = conf::allCases();
+  const conf::Case& c = findCase(cases, o.caseId);
+  const gpu::ShaderStage& stage = stageOf(c);
+  if (o.printInterface) return printInterface(c, stage);
+  if (o.shader.empty()) throw conf::UsageError("--shader FILE.frag is required (or --print-interface)");
+  const gpu::ShaderOverride shader{std::string(stage.name), io::readWholeFile(o.shader), o.shader.string()};
+
+  const auto driver = gpu::parseDriver(o.driver);
+  if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "' (llvmpipe, softpipe or egl)");
+  std::unique_ptr<gpu::Context> gl;
+  try {
+    gl = gpu::createContext(*driver);
+  } catch (const gpu::GlUnavailable& e) {
+    std::cerr << "voxref: no GL context for --driver " << o.driver << ": " << e.what() << "\n";
+    return 2;
+  }
+  std::string how;
+  const emu::PrecisionProfile* profile = nullptr;
+  try {
+    profile = conf::chooseProfile(o.profile, gl->info(), how);
+  } catch (const std::invalid_argument& e) {
+    throw conf::UsageError(e.what());
+  }
+
+  std::cout << "voxref check-shader: " << c.id << " on " << gl->info().renderer << " (" << gl->info().version << "), profile "
+            << (profile ? std::string(profile->name) : std::string("none: envelope oracle alone")) << std::endl;
+
+  // Compile and link first, so that errors are the user's, with the file's line numbers.
+  try {
+    (void)gpu::buildStageProgram(*gl, stage, &shader);
+  } catch (const gpu::ShaderError& e) {
+    std::cerr << "voxref: " << shader.fileName << " does not build as stage `" << stage.name << "` (line numbers are the file's):\n"
+              << e.infoLog() << "(voxref prepends #version, PRECISE and sample_point.glsl: docs/shader-interface.md, or voxref check-shader --case "
+              << c.id << " --print-interface)\n";
+    return 2;
+  }
+  shader.programsBuilt = 0;
+
+  io::ensureDirectory(o.out);
+  conf::CaseContext ctx(gl.get(), profile, o.out, o.threads, true);
+  ctx.setShaderOverride(&shader);
+  conf::RunInfo run;
+  run.command = o.command;
+  run.started = conf::utcTimestamp();
+  run.driver = conf::driverJson(gl->info(), profile, how);
+  conf::CaseResult r = conf::runCase(c, ctx);
+  r.description += " [user shader " + shader.fileName + " as " + shader.stage + "]";
+  r.figures["user_shader"] = {{"file", shader.fileName}, {"stage", shader.stage}, {"programs_built", shader.programsBuilt}};
+  printResult(r, shader);
+  run.finished = conf::utcTimestamp();
+  run.execution = {{"isolation", "none: the case ran in this process"}, {"jobs", 1}};
+  writeReport(o, run, {r});
+  if (r.status == conf::Status::Skip) {
+    std::cerr << "voxref: the shader was not judged: GL skipped the case (" << r.message << ")\n";
+    return 2;
+  }
+  if (shader.programsBuilt == 0 && r.status != conf::Status::Crash) {
+    std::cerr << "voxref: the shader was not judged: case " << c.id << " never built stage `" << stage.name << "`\n";
+    return 2;
+  }
+  return r.status == conf::Status::Pass || r.status == conf::Status::Warn ? 0 : 1;
+}
+
+}  // namespace voxref::cli

@@ -1,0 +1,58 @@
+// `voxref probe`: render the probe frames, infer the driver's fingerprint from their bits alone,
+// hold it against the known profiles (docs/probe.md). GL_RENDERER is printed, never consulted.
+#include <iostream>
+
+#include "conformance/cli/commands.h"
+#include "conformance/driver_info.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/probe/driver_fingerprint.h"
+#include "conformance/probe/fingerprint_match.h"
+#include "conformance/runner.h"
+#include "gpu/gl_error.h"
+#include "gpu/probe_gl.h"
+
+namespace voxref::cli {
+
+int runProbe(const ProbeOptions& o) {
+  const auto driver = gpu::parseDriver(o.driver);
+  if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "' (llvmpipe, softpipe or egl)");
+  std::unique_ptr<gpu::Context> context;
+  try {
+    context = gpu::createContext(*driver);
+  } catch (const gpu::GlUnavailable& e) {
+    std::cerr << "voxref: no GL context for --driver " << o.driver << ": " << e.what() << "\n";
+    return 2;
+  }
+  const gpu::ContextInfo& info = context->info();
+  const ref::ProbeDesign& design = ref::probeDesign();
+  const std::vector<ref::ProbeFrame> frames = gpu::renderProbeFramesGl(*context, design);
+  const conf::DriverFingerprint fingerprint = conf::inferFingerprint(design, frames);
+  const std::vector<conf::ProfileComparison> comparisons = conf::compareWithKnownProfiles(design, fingerprint, frames);
+
+  std::cout << "voxref probe: " << info.renderer << ", " << info.version << " (" << info.api << "); " << frames.size()
+            << " probe frames; environment:";
+  for (const auto& [k, v] : gpu::environmentPins()) std::cout << " " << k << "=" << v;
+  std::cout << "\n";
+  conf::printProbeReport(std::cout, fingerprint, comparisons);
+  bool matched = false, confirmsAuto = false;
+  std::string how;
+  const emu::PrecisionProfile* autoPick = conf::chooseProfile("auto", info, how);
+  for (const conf::ProfileComparison& c : comparisons) {
+    matched = matched || c.matches();
+    confirmsAuto = confirmsAuto || (c.matches() && c.profile == autoPick);
+  }
+  // A cross-check only: `auto` reads GL_RENDERER and the environment, the probe read nothing but bits.
+  std::cout << "auto would pick " << (autoPick ? std::string(autoPick->name) : "no profile") << " (" << how << "), "
+            << (confirmsAuto ? "which the probe confirms" : "which the probe does not confirm") << "\n";
+
+  if (!o.out.empty()) {
+    nlohmann::json j = conf::probeJson(fingerprint, comparisons);
+    j["driver"] = conf::driverJson(info, autoPick, how);
+    j["auto_confirmed"] = confirmsAuto;
+    io::writeFileAtomically(o.out, j.dump(2) + "\n");
+    std::cout << "wrote " << o.out.string() << "\n";
+  }
+  return matched ? 0 : 1;
+}
+
+}  // namespace voxref::cli

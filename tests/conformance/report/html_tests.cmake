@@ -1,0 +1,31 @@
+# The HTML report in a real browser (Debian's chromium, headless): a small run with a pass, a
+# failure (llvmpipe's FMA profile on llvmpipe without FMA), a crash and three systems; then its
+# index and one case page are loaded and checked against results.json (check_html_page.cmake);
+# and negative controls prove that the check catches a script error, a wrong count and an image
+# that does not load. Included from tests/CMakeLists.txt (voxref_expect, test_out, voxref_bin).
+find_program(VOXREF_CHROMIUM NAMES chromium chromium-browser DOC "headless browser for the tests of the HTML report")
+set(html_report "${test_out}/report-html")
+# A fresh directory: pages left by an earlier run must not stand in for pages this run failed to write.
+add_test(NAME report.html.clean COMMAND ${CMAKE_COMMAND} -E rm -rf "${html_report}")
+set_tests_properties(report.html.clean PROPERTIES FIXTURES_SETUP html_report_clean LABELS report)
+voxref_expect(report.html.run
+  COMMAND "${voxref_bin}|conform|--profile|llvmpipe|--runner-controls|--all-images|--timeout|60|--filter|sparsegrid.texture.r32f.exact.linear.repeat,sparsegrid.combination.rgba8.l4.*,iso.hard.single_voxel,runner.control.segfault|--out|${html_report}"
+  EXIT 1 ENVIRONMENT "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1" OUTPUT "summary: 4 pass 0 warn 1 fail 0 skip 1 crash 0 timeout"
+  SETS html_report NEEDS html_report_clean LABELS report)
+
+function(voxref_html_check name page)
+  cmake_parse_arguments(ARG "" "BREAK;EXPECT_PROBLEM" "" ${ARGN})
+  set(args "-DCHROMIUM=${VOXREF_CHROMIUM}" "-DREPORT_DIR=${html_report}" "-DPAGE=${page}" "-DSCRATCH=${test_out}/chromium/${name}")
+  if(ARG_BREAK)
+    list(APPEND args "-DBREAK=${ARG_BREAK}" "-DEXPECT_PROBLEM=${ARG_EXPECT_PROBLEM}")
+  endif()
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} ${args} -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED html_report LABELS report TIMEOUT 300
+                       SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")
+endfunction()
+
+voxref_html_check(report.html.index_in_chromium index)
+voxref_html_check(report.html.case_page_in_chromium case)
+voxref_html_check(report.html.negative_control.script_error index BREAK script_error EXPECT_PROBLEM "voxrefNoSuchFunction is not defined")
+voxref_html_check(report.html.negative_control.wrong_count index BREAK wrong_count EXPECT_PROBLEM "count-pass shows 987654, results.json says")
+voxref_html_check(report.html.negative_control.missing_image case BREAK missing_image EXPECT_PROBLEM "could not load img [^ ]*/images/no-such-")
