@@ -19,12 +19,16 @@ CpuFlags detectCpuFlags() {
 }
 
 const emu::PrecisionProfile* chooseProfile(const std::string& choice, const gpu::ContextInfo& info, std::string& how) {
+  if (choice == "envelope") {  // DESIGN.md: `envelope` is the spec model, no driver's arithmetic
+    how = "named on the command line: envelope, the spec model alone; judged by the envelope oracle alone";
+    return nullptr;
+  }
   if (choice != "auto") {
     const emu::PrecisionProfile* p = emu::findProfile(choice);
     if (!p) {
       std::string known;
       for (const auto& k : emu::knownProfiles()) known += (known.empty() ? "" : ", ") + std::string(k.name);
-      throw std::invalid_argument("unknown profile '" + choice + "' (known: auto, " + known + ")");
+      throw std::invalid_argument("unknown profile '" + choice + "' (known: auto, envelope, " + known + ")");
     }
     how = "named on the command line";
     return p;

@@ -16,8 +16,10 @@ struct CpuFlags {
 };
 CpuFlags detectCpuFlags();
 
-// The profile for `choice` ("auto" or a profile name) on this context. For "auto", nullptr
-// means an unknown driver (judged by the envelope alone); `how` says what was decided and why.
+// The profile for `choice` ("auto", "envelope" or a profile name) on this context. nullptr means
+// no driver arithmetic to emulate: "envelope" asks for that (the spec model alone, as a driver
+// voxref has no profile for is judged), and "auto" gives it for an unknown renderer. `how` says
+// what was decided and why.
 // Throws std::invalid_argument for an unknown profile name (the message lists the known ones).
 const emu::PrecisionProfile* chooseProfile(const std::string& choice, const gpu::ContextInfo& info, std::string& how);
 

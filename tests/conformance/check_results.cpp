@@ -13,6 +13,8 @@
 // --same-results-as OTHER.json: every case has the same status, message, oracles, effects,
 //   findings, figures and worst pixels as in OTHER (times, stderr and the run's own fields such
 //   as the command and --jobs aside), and every image file both name is the same, byte for byte.
+// --expect-envelope-alone: the run names no profile and says it is judged by the envelope alone;
+//   no case ran the exact oracle, and every case's envelope oracle ran.
 // --expect-regressed ID / --expect-fixed ID: the "baseline" block lists the case so.
 // Prints every violation; exits 1 if there is any, 2 on bad usage or an unreadable file.
 #include <filesystem>
@@ -75,7 +77,7 @@ int main(int argc, char** argv) {
   std::size_t minCases = 1;
   std::map<std::string, std::string> expectStatus, expectStderr;
   std::vector<std::string> expectRegressed, expectFixed;
-  bool expectInterrupted = false;
+  bool expectInterrupted = false, envelopeAlone = false;
   std::string sameAs;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
@@ -88,6 +90,7 @@ int main(int argc, char** argv) {
     else if (a == "--expect-status" && i + 1 < argc) expectStatus.insert(splitAt(argv[++i]));
     else if (a == "--expect-stderr" && i + 1 < argc) expectStderr.insert(splitAt(argv[++i]));
     else if (a == "--expect-interrupted") expectInterrupted = true;
+    else if (a == "--expect-envelope-alone") envelopeAlone = true;
     else if (a == "--same-results-as" && i + 1 < argc) sameAs = argv[++i];
     else if (a == "--expect-regressed" && i + 1 < argc) expectRegressed.push_back(argv[++i]);
     else if (a == "--expect-fixed" && i + 1 < argc) expectFixed.push_back(argv[++i]);
@@ -150,6 +153,16 @@ int main(int argc, char** argv) {
       for (const auto& f : c["findings"])
         if (f["id"] == want && f["figures"].value("samples_changed", 0) > 0) seen = true;
     if (!seen) violation("finding " + want + " changed no sample in any case");
+  }
+  if (envelopeAlone) {
+    const auto& p = r["driver"]["profile"];
+    if (!p["name"].is_null()) violation("the run names profile " + p["name"].dump());
+    if (p.value("chosen", "").find("envelope oracle alone") == std::string::npos) violation("the run does not say it is judged by the envelope alone");
+    for (const auto& c : cases) {
+      const auto& o = c["oracles"];
+      if (o.contains("exact") && o["exact"]["verdict"] != "not_run") violation(c["id"].get<std::string>() + ": the exact oracle ran without a profile");
+      if (!o.contains("envelope") || o["envelope"]["verdict"] == "not_run") violation(c["id"].get<std::string>() + ": the envelope oracle did not run");
+    }
   }
   for (const auto& [id, status] : expectStatus) violation(id + " did not run (expected " + status + ")");
   for (const auto& [id, text] : expectStderr) violation(id + ": --expect-stderr needs --expect-status for the same case");

@@ -76,3 +76,12 @@ voxref_expect(runner.baseline_fixed
 voxref_expect(runner.baseline_unreadable
   COMMAND "${voxref_bin}|conform|--filter|${baseline_case}|--baseline|${test_out}/no-such-dir/results.json|--out|${test_out}/runner-baseline-missing"
   EXIT 2 OUTPUT "--baseline: .*no-such-dir/results.json")
+
+# A driver judged by the envelope alone (as an unknown driver is): --profile envelope. The report
+# says so; the exact oracle does not run; the envelope judges every case of all three kinds of
+# envelope-judged scenes.
+voxref_expect(runner.envelope_alone
+  COMMAND "${voxref_bin}|conform|--profile|envelope|--filter|sparsegrid.combination.rgba8.l5.*,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres|--out|${test_out}/runner-envelope"
+  EXIT 0 OUTPUT "profile none: envelope oracle alone.*summary: [1-9][0-9]* pass 0 warn 0 fail"
+  CHECK "${check}|${test_out}/runner-envelope/results.json|--expect-envelope-alone|--min-cases|10"
+  LABELS runner TIMEOUT 600)
