@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <iostream>
 #include <ostream>
 #include <sstream>
 
 #include "conformance/bench/iso_bench.h"
 #include "conformance/bench/leb_bench.h"
+#include "conformance/bench/plots.h"
 #include "conformance/bench/sparsegrid_bench.h"
 #include "conformance/bench/timevarying_bench.h"
 #include "conformance/catalog.h"
@@ -90,6 +92,8 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
     throw UsageError("no benchmark matches '" + options.filter + "' (known: " + known + ")");
   }
   io::ensureDirectory(options.out);
+  if (findOnPath("gnuplot").empty())
+    std::cerr << "voxref bench: warning: gnuplot is not on PATH: no accuracy plot can be made (the tables are still written; exit status 1 if a plot is due)\n";
   std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
   std::string how;
   const emu::PrecisionProfile* profile = chooseProfile("auto", gl->info(), how);
@@ -106,9 +110,35 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
     md += markdown(t);
     json["tables"].push_back({{"id", t.id}, {"title", t.title}, {"columns", t.columns}, {"rows", t.rows}, {"notes", t.notes}, {"data", t.data}});
   }
+  // Plots of accuracy against time (plots.h). Without them the run is not complete: the tables
+  // are still written, the markdown says why the plots are missing, and the exit status is 1.
+  std::vector<AccuracyPlot> plots;
+  for (const BenchTable& t : tables)
+    for (AccuracyPlot& p : accuracyPlots(t)) plots.push_back(std::move(p));
+  std::string plotError;
+  if (!plots.empty()) {
+    md += "## Accuracy against time\n\nOne point per precision variant; the Pareto front (the variants no other beats in both time "
+          "and error) is joined by a line. Timings are of this run on this machine.\n\n";
+    json["plots"] = nlohmann::json::array();
+    try {
+      for (const AccuracyPlot& p : plots) {
+        const PlotFiles files = writeAccuracyPlot(p, options.out / "plots");
+        md += plotMarkdown(p, files, "plots");
+        json["plots"].push_back(plotJson(p, files, "plots"));
+      }
+    } catch (const PlotError& e) {
+      plotError = e.what();
+      md += "**Plots not made: " + plotError + "**\n\n";
+      json["plots_error"] = plotError;
+    }
+  }
   io::writeFileAtomically(options.out / "bench.md", md);
   io::writeFileAtomically(options.out / "bench.json", json.dump(2) + "\n");
   out << md << "wrote " << (options.out / "bench.md").string() << " and bench.json\n";
+  if (!plotError.empty()) {
+    std::cerr << "voxref bench: error: plots not made: " << plotError << "\n";
+    return 1;
+  }
   return 0;
 }
 

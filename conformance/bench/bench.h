@@ -53,8 +53,11 @@ Timing measureOnce(const std::function<void()>& fn);
 // printf-style formatting of one number ("%.2f:1").
 std::string formatNumber(const char* format, double v);
 
-// Runs the benchmarks whose id matches the filter, writes out/bench.md and out/bench.json, and
-// prints the markdown. Returns the exit status (2 when nothing matches).
+// Runs the benchmarks whose id matches the filter, writes out/bench.md and out/bench.json and,
+// for the tables with precision variants, accuracy-against-time plots in out/plots (plots.h),
+// and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
+// (gnuplot missing or failing: the tables are still written and the markdown says why).
+// Throws UsageError when nothing matches.
 int runBenchmarks(const BenchOptions& options, std::ostream& out);
 
 }  // namespace voxref::conf

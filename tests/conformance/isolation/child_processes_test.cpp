@@ -52,7 +52,9 @@ TEST(ChildProcesses, EveryWayOfEndingIsTold) {
   EXPECT_NE(o.at(5).output.find("thrown"), std::string::npos);
   for (const auto& [i, outcome] : o) {
     EXPECT_NE(outcome.output.find("task " + std::to_string(i) + " says hello"), std::string::npos) << i;
-    if (i != 0) EXPECT_TRUE(outcome.result.empty()) << i;
+    if (i != 0) {
+      EXPECT_TRUE(outcome.result.empty()) << i;
+    }
   }
   EXPECT_NE(describe(o.at(1), 2).find("SIGSEGV"), std::string::npos);
   EXPECT_NE(describe(o.at(4), 2).find("time limit of 2 s"), std::string::npos);

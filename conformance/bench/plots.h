@@ -1,0 +1,63 @@
+// Accuracy-against-time plots of `voxref bench`: one per system that has precision variants, one
+// point per variant (labelled), the Pareto front joined by a line, as PNG and SVG made by gnuplot.
+// Beside the images go the gnuplot script and its data file, so that a user can re-plot
+// (`cd DIR/plots && gnuplot ID.gp`). Every file is written atomically (io/atomic_file.h).
+#pragma once
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "conformance/bench/bench.h"
+#include "conformance/bench/pareto.h"
+
+namespace voxref::conf {
+
+// The plots could not be made: gnuplot is not on PATH, could not be started, or failed (the
+// message names the program and carries its error output).
+class PlotError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct AccuracyPlot {
+  std::string id;  // file stem: "sparsegrid.accuracy"
+  std::string title;
+  std::string xLabel;  // what the cost is: "GL seconds per frame (median)"
+  std::string yLabel;  // what the error is: "RMSE against the double reference"
+  std::vector<std::string> labels;     // one per point: the variant
+  std::vector<TradeoffPoint> points;   // cost in seconds (> 0), error >= 0
+  std::string note;                    // variants left out and why; empty when none
+};
+
+// The plots a bench table's data gives: sparsegrid.accuracy (RMSE against GL time per frame,
+// highest level measured), timevarying.address_variants (wrong-fetch share against GL decode
+// time), iso.table2 (false culls per frame against frame time, one plot per data set). Other
+// tables give none. Reads only table.data (what bench.json holds), never the formatted rows.
+std::vector<AccuracyPlot> accuracyPlots(const BenchTable& table);
+
+// The path of the program `name` on PATH, or empty when there is none.
+std::filesystem::path findOnPath(const std::string& name);
+
+struct PlotFiles {
+  std::filesystem::path png, svg, script, data;  // all in the same folder
+  std::vector<std::size_t> front;                // paretoFront(plot.points)
+  std::string costSummary;                       // frontCostSummary of the front
+};
+
+// Writes dir/ID.dat and dir/ID.gp, runs gnuplot on them into dir/ID.png and dir/ID.svg (each
+// through a temporary file renamed when gnuplot succeeded). Creates dir. Throws PlotError when
+// gnuplot is missing or fails, io::IoError when a file cannot be written.
+PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::path& dir);
+
+// The markdown of one plot: the image link (relative to the folder of bench.md, where `dir` is
+// `relativeDir`), links to the SVG, script and data, and the "what each extra bit costs" line.
+std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const std::string& relativeDir);
+
+// The JSON record of one plot for bench.json.
+nlohmann::json plotJson(const AccuracyPlot& plot, const PlotFiles& files, const std::string& relativeDir);
+
+}  // namespace voxref::conf

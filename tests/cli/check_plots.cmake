@@ -1,0 +1,23 @@
+cmake_minimum_required(VERSION 3.25)
+# Script mode: checks that `voxref bench` made the plot ID in the folder PLOTS: the PNG (its
+# signature), the SVG (an XML document with an <svg> root that is closed), the gnuplot script and
+# its data file, none of them empty.
+foreach(ext png svg gp dat)
+  set(f "${PLOTS}/${ID}.${ext}")
+  if(NOT EXISTS "${f}")
+    message(FATAL_ERROR "${f} is missing")
+  endif()
+  file(SIZE "${f}" size)
+  if(size EQUAL 0)
+    message(FATAL_ERROR "${f} is empty")
+  endif()
+endforeach()
+file(READ "${PLOTS}/${ID}.png" signature LIMIT 8 HEX)
+if(NOT signature STREQUAL "89504e470d0a1a0a")
+  message(FATAL_ERROR "${PLOTS}/${ID}.png does not start with the PNG signature (${signature})")
+endif()
+file(READ "${PLOTS}/${ID}.svg" svg)
+if(NOT svg MATCHES "^[ \t\r\n]*<\\?xml[^>]*\\?>" OR NOT svg MATCHES "<svg[ \t\r\n>]" OR NOT svg MATCHES "</svg>[ \t\r\n]*$")
+  message(FATAL_ERROR "${PLOTS}/${ID}.svg is not an XML document with a closed <svg> root")
+endif()
+message("plot ${ID}: png, svg, gp and dat present")
