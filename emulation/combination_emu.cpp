@@ -38,10 +38,11 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
                                    const ref::SamplerState& sampler, ref::FramebufferFormat format,
                                    const PrecisionProfile& profile, const CombinationEmuOptions& options,
                                    const std::function<void(int)>& progress) {
-  const BlendEmu blend(format, profile, options.flushEachPass, frame.width, frame.height);
+  const BlendEmu blend(format, profile, options.flushEachPass, frame.width, frame.height, options.forceAllEffects);
   std::vector<TextureSamplerEmu> samplers;
   samplers.reserve(textures.textures.size());
-  for (const ref::GridTexture& t : textures.textures) samplers.emplace_back(t.dims, textures.format, t.codes, sampler, profile);
+  for (const ref::GridTexture& t : textures.textures)
+    samplers.emplace_back(t.dims, textures.format, t.codes, sampler, profile, options.forceAllEffects);
 
   const std::size_t samples = static_cast<std::size_t>(frame.width) * frame.height * frame.planes;
   EmulatedPlanes out{{format, frame.width, frame.height, frame.planes, std::vector<std::uint32_t>(samples)},

@@ -20,6 +20,10 @@ namespace voxref::emu {
 struct CombinationEmuOptions {
   bool flushEachPass = false;  // mirrors gpu::CombinationGlOptions::flushEachPass
   int threads = 0;             // 0: hardware concurrency
+  // Run every stage the pruning skips for this state anyway, as identities (issue 7: pruning
+  // measured): the NEAREST sampler's weight stage (TextureSamplerEmu) and the float formats'
+  // per-pass clamp and float32 tile store (BlendEmu). Same bits; only the time differs.
+  bool forceAllEffects = false;
 };
 
 struct EmulatedPlanes {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <limits>
 #include <stdexcept>
 
 #include "emulation/float32.h"
@@ -9,13 +10,16 @@
 namespace voxref::emu {
 
 BlendEmu::BlendEmu(ref::FramebufferFormat format, const PrecisionProfile& profile, bool flushEachPass, int width,
-                   int height)
+                   int height, bool forceAllEffects)
     : format_(format),
       profile_(&profile),
       // The 12-bit buffer is voxref's own definition, the same for every profile.
       model_(format == ref::FramebufferFormat::RGBA12 ? FramebufferModel::QuantizePerPass : profile.framebuffer),
       flushEachPass_(flushEachPass),
-      bits_(ref::unormBits(format)) {
+      bits_(ref::unormBits(format)),
+      force_(forceAllEffects),
+      clampLo_(-std::numeric_limits<float>::infinity()),
+      clampHi_(std::numeric_limits<float>::infinity()) {
   if (model_ == FramebufferModel::FloatTileCache &&
       (width > profile.maxModelledTargetWidth || height > profile.maxModelledTargetHeight))
     throw std::invalid_argument("profile " + std::string(profile.name) + " models targets up to " +
@@ -64,6 +68,10 @@ std::uint32_t BlendEmu::store(float value) const {
   return 0;
 }
 
+// The clamp stage of a float format, run only when forced: its bounds are the format's range
+// (-inf, +inf), and NaN passes as it is, so it changes no bit.
+float BlendEmu::formatClamp(float x) const { return x < clampLo_ ? clampLo_ : (x > clampHi_ ? clampHi_ : x); }
+
 float BlendEmu::reload(std::uint32_t code) const {
   if (bits_) return unormToFloat(code, bits_);
   if (format_ == ref::FramebufferFormat::RGBA16F) return halfToFloat(static_cast<std::uint16_t>(code));
@@ -81,22 +89,30 @@ void BlendEmu::blend(PixelState& px, float src, ref::BlendEquation eq) const {
     }
     if (format_ == ref::FramebufferFormat::RGBA16F) {  // lp_state_fs.c: half -> float, blend, float -> half RTZ
       const float d = halfToFloat(static_cast<std::uint16_t>(px.code));
-      px.code = floatToHalfTowardZero(add ? src + d : d - src);
+      const float s = force_ ? formatClamp(src) : src;
+      const float r = add ? s + d : d - s;
+      px.code = floatToHalfTowardZero(force_ ? formatClamp(r) : r);
       return;
     }
     auto ftz = [this](float x) { return profile_->flushDenormals ? flushDenormal(x) : x; };
-    const float d = ftz(std::bit_cast<float>(px.code)), s = ftz(src);
-    px.code = std::bit_cast<std::uint32_t>(ftz(add ? s + d : d - s));
+    const float d = ftz(std::bit_cast<float>(px.code)), s = ftz(force_ ? formatClamp(src) : src);
+    const float r = ftz(add ? s + d : d - s);
+    px.code = std::bit_cast<std::uint32_t>(force_ ? formatClamp(r) : r);
     return;
   }
   // FloatTileCache (sp_quad_blend.c blend_single_add_one_one / blend_quad). CLAMP of u_math.h
   // maps NaN to the lower bound.
   auto clampUnit = [](float x) { return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f; };
   const bool clamp = bits_ != 0;
-  const float s = clamp ? clampUnit(src) : src;
+  const float s = clamp ? clampUnit(src) : force_ ? formatClamp(src) : src;
   float r = add ? s + px.value : px.value - s;
-  if (clamp) r = clampUnit(r);
-  px.value = flushEachPass_ ? reload(store(r)) : r;
+  if (clamp)
+    r = clampUnit(r);
+  else if (force_)
+    r = formatClamp(r);
+  // A float32 tile stored and reloaded is a bit cast: pruned unless forced.
+  const bool flush = flushEachPass_ || (force_ && format_ == ref::FramebufferFormat::RGBA32F);
+  px.value = flush ? reload(store(r)) : r;
 }
 
 std::uint32_t BlendEmu::resolve(const PixelState& px) const {

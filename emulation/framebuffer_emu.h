@@ -35,7 +35,12 @@ class BlendEmu {
  public:
   // Throws std::invalid_argument if the profile cannot model a target of this size (softpipe's
   // tile cache evicts, and so quantizes, tiles of targets over 320 x 640).
-  BlendEmu(ref::FramebufferFormat format, const PrecisionProfile& profile, bool flushEachPass, int width, int height);
+  // forceAllEffects: run the stages the format does not call for anyway, as identities (pruning
+  // measured, issue 7): float formats run the per-pass clamp of source and result with the
+  // format's own bounds (-inf, +inf; NaN passes), and a float32 tile is stored and reloaded every
+  // pass (a bit cast). Same bits as without.
+  BlendEmu(ref::FramebufferFormat format, const PrecisionProfile& profile, bool flushEachPass, int width, int height,
+           bool forceAllEffects = false);
 
   PixelState cleared() const { return {}; }  // glClearColor(0, 0, 0, 0)
   void blend(PixelState& pixel, float src, ref::BlendEquation equation) const;
@@ -45,12 +50,15 @@ class BlendEmu {
  private:
   std::uint32_t store(float value) const;   // tile value -> stored code (FloatTileCache)
   float reload(std::uint32_t code) const;   // stored code -> tile value
+  float formatClamp(float x) const;         // forced clamp of a float format: an identity
 
   ref::FramebufferFormat format_;
   const PrecisionProfile* profile_;
   FramebufferModel model_;
   bool flushEachPass_;
   int bits_;  // unorm bits, 0 for float formats
+  bool force_ = false;
+  float clampLo_, clampHi_;  // the float formats' range: read at run time, so the forced clamp is run
 };
 
 // RGBA8 blending with glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA), GL_FUNC_ADD: the

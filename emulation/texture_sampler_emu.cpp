@@ -28,8 +28,8 @@ float fractOf(float s) { return s - std::floor(s); }
 
 TextureSamplerEmu::TextureSamplerEmu(const ref::Dims3& dims, ref::TexelFormat format,
                                      const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler,
-                                     const PrecisionProfile& profile)
-    : dims_(dims), format_(format), codes_(&codes), sampler_(sampler), profile_(&profile) {
+                                     const PrecisionProfile& profile, bool forceAllEffects)
+    : dims_(dims), format_(format), codes_(&codes), sampler_(sampler), profile_(&profile), force_(forceAllEffects) {
   const bool unorm8 = ref::unormBits(format) == 8;
   const bool simpleWrap = sampler.wrap == ref::Wrap::Repeat || sampler.wrap == ref::Wrap::ClampToEdge;
   if (sampler.filter == ref::Filter::Nearest)
@@ -236,6 +236,23 @@ int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& pr
   return 0;
 }
 
+float TextureSamplerEmu::weightStageIdentity(float value, float s, float t, float r) const {
+  if (!std::isfinite(value)) return value;  // inf - inf: the stage is an identity only on finite values
+  const int n[3] = {std::max(dims_[0], 1), std::max(dims_[1], 1), std::max(dims_[2], 1)};
+  const float c[3] = {s, t, r};
+  float w[3];
+  for (int a = 0; a < 3; ++a) {
+    w[a] = floatLinearAxis(c[a], n[a]).w;
+    if (!(w[a] >= 0.0f && w[a] <= 1.0f)) w[a] = 0.0f;  // NaN or infinite coordinates
+  }
+  const float row = lerp(w[0], value, value);              // x on the four edges: all equal
+  const float slice = lerp(w[1], row, lerp(w[0], value, value));
+  const float slice1 = lerp(w[1], lerp(w[0], value, value), lerp(w[0], value, value));
+  const float v = lerp(w[2], slice, slice1);
+  // -0 + 0 = +0: keep the texel's own zero (the stage changes no bit of any finite value).
+  return v == 0.0f ? value : v;
+}
+
 // --- Sampling ----------------------------------------------------------------------------------
 
 void TextureSamplerEmu::aliasTaps(const int x[2], const int y[2], const int z[2], float values[8],
@@ -286,7 +303,7 @@ float TextureSamplerEmu::sampleRed(float s, float t, float r, bool* unmodelled) 
     case SamplerPath::Nearest: {
       const int x = nearestTexelIndex(s, dims_[0], sampler_.wrap, *profile_), y = nearestTexelIndex(t, dims_[1], sampler_.wrap, *profile_),
                 z = nearestTexelIndex(r, dims_[2], sampler_.wrap, *profile_);
-      return texel(x, y, z);
+      return force_ ? weightStageIdentity(texel(x, y, z), s, t, r) : texel(x, y, z);
     }
     case SamplerPath::Aos8Linear: {
       const FixedAxis ax = aosLinearAxis(s, dims_[0]), ay = aosLinearAxis(t, dims_[1]), az = aosLinearAxis(r, dims_[2]);

@@ -34,14 +34,22 @@ int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& pr
 class TextureSamplerEmu {
  public:
   // `codes` (red-channel codes, texel_format.h) must outlive the sampler and hold dims' texels.
+  // forceAllEffects: run the stages the state does not call for anyway, as identities (pruning
+  // measured, issue 7): NEAREST computes the LINEAR path's float weights and runs the seven
+  // trilinear lerps with every tap on the selected texel (weightStageIdentity). Same bits.
   TextureSamplerEmu(const ref::Dims3& dims, ref::TexelFormat format, const std::vector<std::uint32_t>& codes,
-                    const ref::SamplerState& sampler, const PrecisionProfile& profile);
+                    const ref::SamplerState& sampler, const PrecisionProfile& profile, bool forceAllEffects = false);
 
   // `unmodelled` (optional) is set when the value depends on state the model does not hold
   // (softpipe tile-cache aliasing onto a partly filled tile: stale data of earlier fragments);
   // the returned value is then NaN.
   float sampleRed(float s, float t, float r, bool* unmodelled = nullptr) const;
   SamplerPath path() const { return path_; }
+  // The float weight stage run on a value that needs none (forceAllEffects): the weights of
+  // (s, t, r) as the float LINEAR path computes them (this sampler's wrap and profile), then the
+  // seven lerps of a trilinear lookup whose eight taps all hold `value`. b - a = 0, so the result
+  // is `value` bit for bit (non-finite values and weights are passed through unchanged).
+  float weightStageIdentity(float value, float s, float t, float r) const;
   // The effects this texture's sampling simulates (storage, conversion, weights, lerps, border).
   std::vector<Effect> effects() const;
 
@@ -68,6 +76,7 @@ class TextureSamplerEmu {
   const PrecisionProfile* profile_;
   SamplerPath path_;
   float border_;
+  bool force_ = false;
 };
 
 }  // namespace voxref::emu

@@ -32,10 +32,22 @@ ref::Rgba8 outputRgba8(const std::array<float, 4>& v) {
 }  // namespace
 
 TimeVaryingDecoderEmu::TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
-                                             const PrecisionProfile& profile)
-    : tex_(&textures), variant_(variant), profile_(&profile) {
+                                             const PrecisionProfile& profile, bool forceAllEffects)
+    : tex_(&textures), variant_(variant), profile_(&profile), force_(forceAllEffects) {
   if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding); !why.empty())
     throw std::invalid_argument(why);
+  if (force_) {  // LINEAR weights with CLAMP_TO_EDGE, the decoders' wrap
+    const ref::SamplerState linear{ref::Filter::Linear, ref::Wrap::ClampToEdge, 0.0};
+    indexWeights_.emplace(textures.index.dims, ref::TexelFormat::RGBA8, noCodes_, linear, profile);
+    refinementWeights_.emplace(textures.refinement.dims, ref::TexelFormat::RGBA8, noCodes_, linear, profile);
+  }
+}
+
+std::array<float, 4> TimeVaryingDecoderEmu::forcedWeights(const std::optional<TextureSamplerEmu>& w, std::array<float, 4> v,
+                                                          const float c[3]) const {
+  if (w)
+    for (float& x : v) x = w->weightStageIdentity(x, c[0], c[1], c[2]);
+  return v;
 }
 
 std::vector<Effect> TimeVaryingDecoderEmu::effects() const {
@@ -115,7 +127,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
         ic[a] = variant_ == ref::DecoderVariant::Literal ? origin + pc[a] / 8.0f : origin + pc[a] * (1.0f / S);
       }
       out.indexTexel = nearest(tex_->index.dims, ic[0], ic[1], ic[2]);
-      c = indexTexel(out.indexTexel);
+      c = forcedWeights(indexWeights_, indexTexel(out.indexTexel), ic);
       for (int a = 0; a < 3; ++a) {
         float offset;
         if (variant_ == ref::DecoderVariant::Literal) {
@@ -129,7 +141,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
       out.refined = c[3] == 1.0f;
       if (out.refined) {
         out.refinementTexel = nearest(tex_->refinement.dims, refCoord[0], refCoord[1], refCoord[2]);
-        c = refinementTexel(out.refinementTexel);
+        c = forcedWeights(refinementWeights_, refinementTexel(out.refinementTexel), refCoord);
       }
       break;
     }
@@ -142,7 +154,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
         ic[a] = ((static_cast<float>(slot[a] * L.cells) + cell[a]) + 0.5f) / indexSize;
       }
       out.indexTexel = nearest(tex_->index.dims, ic[0], ic[1], ic[2]);
-      c = indexTexel(out.indexTexel);
+      c = forcedWeights(indexWeights_, indexTexel(out.indexTexel), ic);
       out.refined = c[3] == 1.0f;
       if (out.refined) {
         for (int a = 0; a < 3; ++a) {
@@ -151,7 +163,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
           refCoord[a] = ((block * r + (voxel - cell[a] * r)) + 0.5f) / refSize;
         }
         out.refinementTexel = nearest(tex_->refinement.dims, refCoord[0], refCoord[1], refCoord[2]);
-        c = refinementTexel(out.refinementTexel);
+        c = forcedWeights(refinementWeights_, refinementTexel(out.refinementTexel), refCoord);
       }
       break;
     }
@@ -161,7 +173,11 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
           if (!profile_->texelFetchOutOfRangeClamps) return std::array<float, 4>{};
           for (int a = 0; a < 3; ++a) t[a] = std::clamp(t[a], 0, d[a] - 1);
         }
-        return index ? indexTexel(t) : refinementTexel(t);
+        if (!force_) return index ? indexTexel(t) : refinementTexel(t);
+        // Forced: the weight stage at the texel's centre, (t + 0.5) / size.
+        float centre[3];
+        for (int a = 0; a < 3; ++a) centre[a] = (static_cast<float>(t[a]) + 0.5f) / static_cast<float>(d[a]);
+        return index ? forcedWeights(indexWeights_, indexTexel(t), centre) : forcedWeights(refinementWeights_, refinementTexel(t), centre);
       };
       std::array<int, 3> cell{};
       for (int a = 0; a < 3; ++a) {
@@ -186,8 +202,8 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
 }
 
 EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads) {
-  const TimeVaryingDecoderEmu decoder(textures, variant, profile);
+                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool forceAllEffects) {
+  const TimeVaryingDecoderEmu decoder(textures, variant, profile, forceAllEffects);
   const std::size_t perPlane = static_cast<std::size_t>(frame.width) * frame.height;
   EmulatedDecode out{{frame.width, frame.height, frame.planes, std::vector<ref::Rgba8>(perPlane * frame.planes)},
                      std::vector<DecodedSample>(perPlane * frame.planes)};
@@ -207,8 +223,9 @@ EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref
 }
 
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool flushEachPass) {
-  const TimeVaryingDecoderEmu decoder(textures, variant, profile);
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool flushEachPass,
+                                bool forceAllEffects) {
+  const TimeVaryingDecoderEmu decoder(textures, variant, profile, forceAllEffects);
   const AlphaBlendEmu blend(profile, flushEachPass);
   ref::RgbaStack out{frame.width, frame.height, 1, std::vector<ref::Rgba8>(static_cast<std::size_t>(frame.width) * frame.height)};
   const glm::vec3 dx(frame.dx), dy(frame.dy);

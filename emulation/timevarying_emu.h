@@ -11,12 +11,14 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "emulation/effects.h"
 #include "emulation/profile.h"
+#include "emulation/texture_sampler_emu.h"
 #include "reference/common/plane_frame.h"
 #include "reference/common/rgba.h"
 #include "reference/timevarying/decoder_variants.h"
@@ -33,7 +35,12 @@ struct DecodedSample {
 class TimeVaryingDecoderEmu {
  public:
   // Throws std::invalid_argument when the decoder cannot read these textures.
-  TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, const PrecisionProfile& profile);
+  // forceAllEffects: run the stages the decoder skips anyway, as identities (issue 7: pruning
+  // measured): every NEAREST fetch (and texelFetch) goes through the LINEAR path's float weight
+  // stage, the seven trilinear lerps of each channel with every tap on the fetched texel
+  // (TextureSamplerEmu::weightStageIdentity). Same bits; only the time differs.
+  TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, const PrecisionProfile& profile,
+                        bool forceAllEffects = false);
   DecodedSample decode(int step, glm::vec3 p) const;  // p exactly as the shader's samplePoint()
   std::vector<Effect> effects() const;
 
@@ -45,6 +52,10 @@ class TimeVaryingDecoderEmu {
   const ref::TimeVaryingTextures* tex_;
   ref::DecoderVariant variant_;
   const PrecisionProfile* profile_;
+  bool force_ = false;
+  std::vector<std::uint32_t> noCodes_;                 // the weight stage reads no texel
+  std::optional<TextureSamplerEmu> indexWeights_, refinementWeights_;  // forced weight stages
+  std::array<float, 4> forcedWeights(const std::optional<TextureSamplerEmu>& w, std::array<float, 4> v, const float c[3]) const;
 };
 
 struct EmulatedDecode {
@@ -54,10 +65,12 @@ struct EmulatedDecode {
 
 // Every plane decoded separately (no blending), as gpu::decodePlanesGl.
 EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0);
+                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0,
+                                   bool forceAllEffects = false);
 
 // The planes composited back to front, as gpu::compositeGl: one image.
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0, bool flushEachPass = false);
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0, bool flushEachPass = false,
+                                bool forceAllEffects = false);
 
 }  // namespace voxref::emu

@@ -10,6 +10,7 @@
 #include "conformance/bench/iso_bench.h"
 #include "conformance/bench/leb_bench.h"
 #include "conformance/bench/plots.h"
+#include "conformance/bench/pruning_bench.h"
 #include "conformance/bench/sparsegrid_bench.h"
 #include "conformance/bench/timevarying_bench.h"
 #include "conformance/catalog.h"
@@ -84,6 +85,7 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   for (const auto& id : timeVaryingBenchIds()) ids.push_back(id);
   for (const auto& id : lebBenchIds()) ids.push_back(id);
   for (const auto& id : isoBenchIds()) ids.push_back(id);
+  for (const auto& id : pruningBenchIds()) ids.push_back(id);
   bool any = false;
   for (const auto& id : ids) any |= globMatch(options.filter, id);
   if (!any) {
@@ -102,6 +104,7 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   for (BenchTable& t : timeVaryingBench(options, *gl, profile)) tables.push_back(std::move(t));
   for (BenchTable& t : lebBench(options)) tables.push_back(std::move(t));
   for (BenchTable& t : isoBench(options, *gl)) tables.push_back(std::move(t));
+  for (BenchTable& t : pruningBench(options, profile)) tables.push_back(std::move(t));
   std::string md = "# voxref bench\n\nDriver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
                    (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
                    (options.quick ? ". Quick mode (smoke run: small sizes)." : ".") + "\n\n";

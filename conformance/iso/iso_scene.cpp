@@ -60,6 +60,8 @@ ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
     v.at(scene.dims[0] / 2 + 1, scene.dims[1] / 2 - 2, scene.dims[2] / 2 + 3) = 200;
     return v;
   }
+  if (scene.data == "empty") return ref::Volume<std::uint16_t>(scene.dims, 0);      // all zero
+  if (scene.data == "full") return ref::Volume<std::uint16_t>(scene.dims, 255);    // all at the 8-bit maximum the frame loop encodes
   if (scene.data == "plateau") {  // a box of exactly the isovalue in zeros: a flat region at it
     ref::Volume<std::uint16_t> v(scene.dims, 0);
     for (int z = scene.dims[2] / 4; z < 3 * scene.dims[2] / 4; ++z)
@@ -125,7 +127,14 @@ std::vector<IsoScene> hardIsoScenes() {
     boundary.data = "gaussian_blobs";
     boundary.dims = {40, 65, 50};  // cut through the blobs: surfaces end on the volume's faces
     boundary.isovalue = 60.0;
-    scenes.insert(scenes.end(), {single, plateau, outside, boundary});
+    IsoScene empty = s, full = s;  // no surface anywhere: the codec and the frame loop on constant extremes
+    empty.name = "empty_volume";
+    empty.data = "empty";
+    empty.isovalue = 120.0;
+    full.name = "full_volume";
+    full.data = "full";
+    full.isovalue = 120.0;
+    scenes.insert(scenes.end(), {single, plateau, outside, boundary, empty, full});
   }
   return scenes;
 }

@@ -21,7 +21,7 @@ struct IsoScene {
   std::filesystem::path volumeFile;  // a raw volume of the user's (.raw or .raw.gz), instead of data
   bool volumeIsUint16 = false;       // little endian
   std::string data = "gaussian_buckyball";  // an analytic field (reference/common/fields.h) sampled as uint8,
-                                            // or "single_voxel" / "plateau" (hard cases)
+                                            // or "single_voxel" / "plateau" / "empty" / "full" (hard cases)
   ref::Dims3 dims{65, 65, 65};
   double isovalue = 85.0;
   ref::OrbitPath path;       // centre, radius, elevation, azimuths, frames

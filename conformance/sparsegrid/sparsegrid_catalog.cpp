@@ -144,6 +144,20 @@ void addHardCases(std::vector<Case>& cases) {
     cases.push_back(combinationCase(std::string("sparsegrid.hard.data_extremes.") + field,
                                     std::string("data at the extreme ") + (field[0] == 'z' ? "0" : "1") + " everywhere, rgba8", s));
   }
+  for (const char* field : {"blobs_near_flt_max", "blobs_denormal"})
+    for (ref::Filter filter : {ref::Filter::Linear, ref::Filter::Nearest}) {
+      SparseGridScene s = defaultSparseGridScene();  // float texels, float framebuffer: nothing clamps or rounds them away
+      s.data.field = field;
+      s.grid.level = 5;
+      s.textures.format = TexelFormat::R32F;
+      s.sampler = {filter, ref::Wrap::ClampToEdge, 0.0};
+      s.framebuffer = FramebufferFormat::RGBA32F;
+      s.shading.mode = RenderMode::Mip;
+      cases.push_back(combinationCase(std::string("sparsegrid.hard.float_extremes.") + field + ".r32f." + str(ref::name(filter)),
+                                      std::string("extreme floats in r32f textures (") + field + "), " + str(ref::name(filter)) +
+                                          ", rgba32f framebuffer, level 5",
+                                      s));
+    }
   for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {
     SparseGridScene s = defaultSparseGridScene();
     s.data.field = "ridge";

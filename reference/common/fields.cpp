@@ -95,7 +95,8 @@ double ridge(double x, double y, double z) {
 }  // namespace
 
 std::vector<std::string> analyticFieldNames() {
-  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9", "gaussian_buckyball"};
+  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9", "gaussian_buckyball",
+          "blobs_near_flt_max", "blobs_denormal"};
 }
 
 Field analyticField(std::string_view name) {
@@ -107,6 +108,11 @@ Field analyticField(std::string_view name) {
   if (name == "ridge") return {std::string(name), ridge};
   if (name == "figure9") return {std::string(name), figure9};
   if (name == "gaussian_buckyball") return {std::string(name), gaussianBuckyball};
+  // Float-texture traps (issue 7): the blobs scaled by powers of two, so every value keeps its
+  // significand. 2^126: a quarter of FLT_MAX at the peak, sums of passes stay finite; 2^-140:
+  // every value (and every texel, after the 1/n+ scaling) is a float32 denormal.
+  if (name == "blobs_near_flt_max") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), 126); }};
+  if (name == "blobs_denormal") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -140); }};
   std::string known;
   for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown analytic field '" + std::string(name) + "' (known: " + known + ")");

@@ -40,6 +40,8 @@ struct Field {
 //   gaussian_buckyball 60 Gaussian atoms (sigma 0.03) at the vertices of a truncated icosahedron
 //                     of radius 0.35 around the centre: a synthetic C60, like the buckyball of
 //                     Gregorski et al. 2004 ("a synthetic dataset made from Gaussian functions")
+//   blobs_near_flt_max gaussian_blobs * 2^126 (peak near FLT_MAX / 4): extreme floats
+//   blobs_denormal    gaussian_blobs * 2^-140: every nonzero value a float32 denormal
 // Throws std::invalid_argument naming the known fields for an unknown name.
 Field analyticField(std::string_view name);
 std::vector<std::string> analyticFieldNames();

@@ -28,6 +28,10 @@ TEST(Catalog, CoversTheIssueMatrix) {
                          "sparsegrid.hard.data_extremes.constant_one", "sparsegrid.hard.large_negative_surpluses.rgba8",
                          "sparsegrid.hard.level1", "sparsegrid.hard.level12.rgba8", "sparsegrid.hard.level12.rgba32f"})
     EXPECT_EQ(selectCases(cases, id).size(), 1u) << id;
+  // The hard-case catalogue of issue 7 (docs/hard_cases.md): each trap it adds.
+  EXPECT_EQ(selectCases(cases, "sparsegrid.hard.float_extremes.*").size(), 4u);
+  EXPECT_EQ(selectCases(cases, "timevarying.hard.empty_noise_full.*").size(), 5u);  // every decoder
+  for (const char* id : {"iso.hard.empty_volume", "iso.hard.full_volume"}) EXPECT_EQ(selectCases(cases, id).size(), 1u) << id;
 }
 
 TEST(Glob, ShellStyle) {

@@ -15,12 +15,14 @@ namespace voxref::emu {
 namespace {
 
 // Exact rational arithmetic on dyadic numbers: every value below is a float32 or a product of two,
-// so it is an integer multiple of 2^-kScale small enough for __int128.
+__extension__ typedef __int128 Int128;  // exact fixed point for the quotient checks (GCC and Clang)
+
+// so it is an integer multiple of 2^-kScale small enough for Int128.
 constexpr int kScale = 80;
-__int128 fixed(double v) {
+Int128 fixed(double v) {
   const long double s = std::ldexp(static_cast<long double>(v), kScale);
   EXPECT_EQ(s, std::floor(s)) << v << " is not a multiple of 2^-" << kScale;
-  return static_cast<__int128>(s);
+  return static_cast<Int128>(s);
 }
 
 // dEQP's ULP of the exact quotient x / y (x, y > 0), derived independently of ulpF32: the binade
@@ -34,8 +36,8 @@ double exactQuotientUlp(double x, double y) {
 
 // Is float f within 2.5 ULP of x / y? |f y - x| <= 2.5 u y, decided in integers.
 bool allowedQuotient(float f, double x, double y, double u) {
-  const __int128 d = fixed(static_cast<double>(f) * y) - fixed(x);
-  const __int128 bound = fixed(2.5 * u * y);
+  const Int128 d = fixed(static_cast<double>(f) * y) - fixed(x);
+  const Int128 bound = fixed(2.5 * u * y);
   return d <= bound && -d <= bound;
 }
 
@@ -104,7 +106,7 @@ TEST(IntervalArithmetic, DivisionAndModAgainstExactRationalsAtWorstPoints) {
     straddling += floors.size() > 1;
     for (double k : floors) {
       // x - y k exactly (dyadic), then its float32 neighbours.
-      const __int128 exact = fixed(c.x) - fixed(static_cast<double>(c.y) * k);
+      const Int128 exact = fixed(c.x) - fixed(static_cast<double>(c.y) * k);
       const long double value = std::ldexp(static_cast<long double>(exact), -kScale);
       const double below = float32Below(static_cast<double>(value)), above = float32Above(static_cast<double>(value));
       const bool found = std::any_of(branches.begin(), branches.end(), [&](const Interval& b) {
