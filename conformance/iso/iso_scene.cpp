@@ -61,7 +61,7 @@ ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
     return v;
   }
   if (scene.data == "empty") return ref::Volume<std::uint16_t>(scene.dims, 0);      // all zero
-  if (scene.data == "full") return ref::Volume<std::uint16_t>(scene.dims, 255);    // all at the 8-bit maximum the frame loop encodes
+  if (scene.data == "full") return ref::Volume<std::uint16_t>(scene.dims, 65535);  // all at the 16-bit maximum
   if (scene.data == "plateau") {  // a box of exactly the isovalue in zeros: a flat region at it
     ref::Volume<std::uint16_t> v(scene.dims, 0);
     for (int z = scene.dims[2] / 4; z < 3 * scene.dims[2] / 4; ++z)

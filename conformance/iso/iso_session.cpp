@@ -37,7 +37,10 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
   ref::DenseGridField dense(volume, ref::quantizedGradients(volume));
   const ref::LebGrid grid = dense.grid();
   const ref::DiamondBounds bounds = ref::computeDiamondBounds(grid, dense.values(), options.threads);
-  auto stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(ref::encodeLeb(volume, 8)));
+  // The stream's sample width: 8 bits when every voxel fits (the built-in scenes, uint8 volumes),
+  // else 16 (a user's uint16 volume); lossless either way (reference/leb/FORMAT.md).
+  const bool fits8 = std::all_of(volume.data().begin(), volume.data().end(), [](std::uint16_t v) { return v <= 255; });
+  auto stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(ref::encodeLeb(volume, fits8 ? 8 : 16)));
   ref::CompressedGridField field(stream, std::size_t{64} << 20);
   const ref::HzOrder order(grid);
 
