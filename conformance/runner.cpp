@@ -89,6 +89,9 @@ std::unique_ptr<CaseContext> makeCaseContext(const RunOptions& options, gpu::Con
                                        options.allImages);
 }
 
+// What a case's process wrote, as the report keeps it.
+std::string keptOutput(const isolation::ChildOutcome& o) { return (o.outputTruncated ? "[... earlier output dropped]\n" : "") + o.output; }
+
 // The result of a case whose process did not hand one back.
 CaseResult lostCase(const Case& c, const isolation::ChildOutcome& o, double timeLimit) {
   CaseResult r;
@@ -97,7 +100,7 @@ CaseResult lostCase(const Case& c, const isolation::ChildOutcome& o, double time
   r.description = c.description;
   r.status = o.ending == isolation::Ending::TimedOut ? Status::Timeout : Status::Crash;
   r.message = isolation::describe(o, timeLimit);
-  r.stderrText = (o.outputTruncated ? "[... earlier output dropped]\n" : "") + o.output;
+  r.stderrText = keptOutput(o);
   return r;
 }
 
@@ -211,7 +214,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
           if (o.ending == isolation::Ending::Finished) {
             try {
               CaseResult r = caseFromJson(nlohmann::json::parse(o.result));
-              r.stderrText = (o.outputTruncated ? "[... earlier output dropped]\n" : "") + o.output;
+              r.stderrText = keptOutput(o);
               slots[i] = std::move(r);
             } catch (const std::exception& e) {
               isolation::ChildOutcome bad = o;

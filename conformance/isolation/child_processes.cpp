@@ -116,16 +116,17 @@ Running start(std::size_t index, const std::function<std::string(std::size_t)>& 
   return r;
 }
 
-// Reads what is available; closes the descriptor at end of file.
-void drain(int& fd, std::string& into, bool keepTail, bool& truncated) {
+// Reads what is available; closes the descriptor at end of file. With `truncated`, keeps only the
+// tail of `into` and sets *truncated when it dropped some.
+void drain(int& fd, std::string& into, bool* truncated) {
   char buf[65536];
   for (;;) {
     const ssize_t n = read(fd, buf, sizeof buf);
     if (n > 0) {
       into.append(buf, static_cast<std::size_t>(n));
-      if (keepTail && into.size() > 2 * kKeptOutputBytes) {
+      if (truncated && into.size() > 2 * kKeptOutputBytes) {
         into.erase(0, into.size() - kKeptOutputBytes);
-        truncated = true;
+        *truncated = true;
       }
       continue;
     }
@@ -245,9 +246,9 @@ bool runEachInChild(std::size_t count, const PoolOptions& options, const std::fu
       if (ready <= 0 || fds[f].revents == 0) continue;
       Running& r = *owners[f].first;
       if (owners[f].second)
-        drain(r.outputFd, r.outcome.output, true, r.outcome.outputTruncated);
+        drain(r.outputFd, r.outcome.output, &r.outcome.outputTruncated);
       else
-        drain(r.resultFd, r.outcome.result, false, r.outcome.outputTruncated);
+        drain(r.resultFd, r.outcome.result, nullptr);
     }
     const auto after = Clock::now();
     if (options.timeLimitSeconds > 0)
