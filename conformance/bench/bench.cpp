@@ -1,5 +1,7 @@
 #include "conformance/bench/bench.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -7,11 +9,13 @@
 #include <ostream>
 #include <sstream>
 
+#include "conformance/bench/bench_html.h"
 #include "conformance/bench/iso_bench.h"
 #include "conformance/bench/leb_bench.h"
 #include "conformance/bench/plots.h"
 #include "conformance/bench/pruning_bench.h"
 #include "conformance/bench/sparsegrid_bench.h"
+#include "conformance/bench/study.h"
 #include "conformance/bench/timevarying_bench.h"
 #include "conformance/catalog.h"
 #include "conformance/driver_info.h"
@@ -47,14 +51,16 @@ std::string formatSeconds(const Timing& t) {
     std::snprintf(buf, sizeof buf, "%.0f s", t.median);
   else if (t.median >= 1)
     std::snprintf(buf, sizeof buf, "%.2f s", t.median);
-  else
+  else if (t.median >= 1e-3)
     std::snprintf(buf, sizeof buf, "%.1f ms", t.median * 1e3);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g us", t.median * 1e6);
   return std::string(buf) + (t.estimated ? "*" : "");
 }
 
 std::filesystem::path benchVolumes(const BenchOptions& o) { return o.volumes.empty() ? std::filesystem::path(VOXREF_DEFAULT_SHARED_VOLUMES) : o.volumes; }
 
-Timing measure(const std::function<void()>& fn) {
+Timing measure(const std::function<void()>& fn, int minRuns) {
   using Clock = std::chrono::steady_clock;
   std::vector<double> runs;
   const auto start = Clock::now();
@@ -62,7 +68,12 @@ Timing measure(const std::function<void()>& fn) {
     const auto t0 = Clock::now();
     fn();
     runs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  } while (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0);
+  } while (static_cast<int>(runs.size()) < minRuns ||
+           (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0));
+  return timingOf(std::move(runs));
+}
+
+Timing timingOf(std::vector<double> runs) {
   std::sort(runs.begin(), runs.end());
   return {runs[runs.size() / 2], runs.front(), runs.back(), static_cast<int>(runs.size()), false};
 }
@@ -105,29 +116,40 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   for (BenchTable& t : lebBench(options)) tables.push_back(std::move(t));
   for (BenchTable& t : isoBench(options, *gl)) tables.push_back(std::move(t));
   for (BenchTable& t : pruningBench(options, profile)) tables.push_back(std::move(t));
-  std::string md = "# voxref bench\n\nDriver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
-                   (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
-                   (options.quick ? ". Quick mode (smoke run: small sizes)." : ".") + "\n\n";
-  nlohmann::json json = {{"driver", driverJson(gl->info(), profile, how)}, {"quick", options.quick}, {"tables", nlohmann::json::array()}};
+  // The study first (study.h), then the papers' tables and the other measurements.
+  std::stable_partition(tables.begin(), tables.end(), [](const BenchTable& t) { return t.id.rfind("study.", 0) == 0; });
+  rusage usage{};
+  ::getrusage(RUSAGE_SELF, &usage);
+  const double peakBytes = static_cast<double>(usage.ru_maxrss) * 1024.0;
+  const std::string header = "Driver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
+                             (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
+                             ". Peak resident memory of the whole run: " + bytesText(peakBytes) + "." +
+                             (options.quick ? " Quick mode (smoke run: small sizes)." : "");
+  std::string md = "# voxref bench\n\n" + header + "\n\n";
+  nlohmann::json json = {{"driver", driverJson(gl->info(), profile, how)}, {"quick", options.quick}, {"threads", ref::workerCount(options.threads)},
+                         {"peak_resident_bytes", peakBytes}, {"tables", nlohmann::json::array()}};
   for (const BenchTable& t : tables) {
     md += markdown(t);
     json["tables"].push_back({{"id", t.id}, {"title", t.title}, {"columns", t.columns}, {"rows", t.rows}, {"notes", t.notes}, {"data", t.data}});
   }
-  // Plots of accuracy against time (plots.h). Without them the run is not complete: the tables
-  // are still written, the markdown says why the plots are missing, and the exit status is 1.
+  // Plots of accuracy against time (plots.h), one per study group. Without them the run is not
+  // complete: the tables are still written, the markdown and the page say why the plots are
+  // missing, and the exit status is 1.
   std::vector<AccuracyPlot> plots;
   for (const BenchTable& t : tables)
-    for (AccuracyPlot& p : accuracyPlots(t)) plots.push_back(std::move(p));
+    for (AccuracyPlot& p : studyPlots(t)) plots.push_back(std::move(p));
+  std::vector<PlottedFigure> plotted;
   std::string plotError;
   if (!plots.empty()) {
-    md += "## Accuracy against time\n\nOne point per precision variant; the Pareto front (the variants no other beats in both time "
-          "and error) is joined by a line. Timings are of this run on this machine.\n\n";
+    md += "## Accuracy against time\n\nOne point per precision variant at its median time (the bar spans the fastest and slowest run); "
+          "the Pareto front (the variants no other beats in both time and error) is joined by a line. Timings are of this run on this machine.\n\n";
     json["plots"] = nlohmann::json::array();
     try {
       for (const AccuracyPlot& p : plots) {
         const PlotFiles files = writeAccuracyPlot(p, options.out / "plots");
         md += plotMarkdown(p, files, "plots");
         json["plots"].push_back(plotJson(p, files, "plots"));
+        plotted.push_back({p, files});
       }
     } catch (const PlotError& e) {
       plotError = e.what();
@@ -136,8 +158,9 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
     }
   }
   io::writeFileAtomically(options.out / "bench.md", md);
-  io::writeFileAtomically(options.out / "bench.json", json.dump(2) + "\n");
-  out << md << "wrote " << (options.out / "bench.md").string() << " and bench.json\n";
+  io::writeFileAtomically(options.out / "results.json", json.dump(2) + "\n");
+  io::writeFileAtomically(options.out / "index.html", benchHtml(header, tables, plotted, "plots", plotError));
+  out << md << "wrote " << (options.out / "bench.md").string() << ", results.json and index.html\n";
   if (!plotError.empty()) {
     std::cerr << "voxref bench: error: plots not made: " << plotError << "\n";
     return 1;

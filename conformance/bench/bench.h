@@ -45,17 +45,19 @@ struct Timing {
 };
 nlohmann::json toJson(const Timing& t);
 std::string formatSeconds(const Timing& t);
-// Median of repeated runs of fn: one run when it takes a second or more, else up to five within
-// about two seconds.
-Timing measure(const std::function<void()>& fn);
+// Median of repeated runs of fn: at least `minRuns` runs; beyond those, more while a run takes
+// under a second, up to five within about two seconds. min and max give the spread.
+Timing measure(const std::function<void()>& fn, int minRuns = 1);
+// The Timing of measured runs (seconds each; at least one): their median, min and max.
+Timing timingOf(std::vector<double> runs);
 // One run of fn.
 Timing measureOnce(const std::function<void()>& fn);
 // printf-style formatting of one number ("%.2f:1").
 std::string formatNumber(const char* format, double v);
 
-// Runs the benchmarks whose id matches the filter, writes out/bench.md and out/bench.json and,
-// for the tables with precision variants, accuracy-against-time plots in out/plots (plots.h),
-// and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
+// Runs the benchmarks whose id matches the filter (the study, study.h, is study.*), writes
+// out/bench.md, out/results.json and out/index.html (bench_html.h) and, per study group, an
+// accuracy-against-time plot in out/plots (plots.h), and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
 // (gnuplot missing or failing: the tables are still written and the markdown says why).
 // Throws UsageError when nothing matches.
 int runBenchmarks(const BenchOptions& options, std::ostream& out);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "conformance/bench/baselines.h"
+#include "conformance/bench/study.h"
 #include "conformance/catalog.h"
 #include "conformance/io/raw_volume.h"
 #include "conformance/progress.h"
@@ -371,9 +372,46 @@ BenchTable pageSize(const BenchOptions& o, const std::vector<LebDataset>& sets) 
   return t;
 }
 
+// --- Study: page size -------------------------------------------------------------------------
+
+BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
+  const LebDataset* d = firstAvailable(sets);
+  StudyGroup pages{"page size (points per page)", "none: every variant decodes bit for bit (checked by a full decode)",
+                   "reconstructing one point's sample and gradient, random 8^3 bricks, 16 MB page cache, 1 thread",
+                   "the compressed stream (data + gradients)", true, {}, ""};
+  if (!d) return studyTable("study.leb", "Study, LEB compression: not run", {}, "not run: no data set available");
+  const std::vector<int> bits = o.quick ? std::vector<int>{6, 8, 10} : std::vector<int>{8, 10, 12, 14, 16};
+  const int points = o.quick ? 4000 : 100000;
+  Progress progress("voxref bench study.leb", static_cast<long>(bits.size()));
+  long done = 0;
+  for (int pb : bits) {
+    progress.update(done++, "2^" + std::to_string(pb));
+    const Encoded e = encodeAndCheck(*d, pb, o.threads);  // throws unless the round trip is exact
+    std::vector<double> perPoint;
+    double misses = 0.0;
+    for (int run = 0; run < kStudyRuns; ++run) {
+      const RandomAccess r = randomAccess(e.stream, 1, std::size_t{16} << 20, points, AccessPattern::Bricks);
+      perPoint.push_back(1.0 / r.pointsPerSecond);
+      misses = r.pageMissesPerPoint;
+    }
+    StudyVariant v;
+    v.name = "2^" + std::to_string(pb);
+    v.error = 0.0;
+    v.time = timingOf(perPoint);
+    v.memoryBytes = static_cast<double>(e.stream->bytes.size());
+    v.figures = {{"lossless", true}, {"ratio", ref::lebStats(*e.stream).ratio()}, {"page_decodes_per_point", misses}};
+    pages.variants.push_back(v);
+  }
+  progress.finish();
+  pages.note = "Lossless: the trade-off is size against access time, so the plot shows bytes, not error.";
+  return studyTable("study.leb", "Study, LEB compression (" + d->name + ")", {pages},
+                    "Smaller pages restart the coder's context more often and add page-table entries; larger pages make a random "
+                    "point decode more deltas it does not need.");
+}
+
 }  // namespace
 
-std::vector<std::string> lebBenchIds() { return {"leb.table1", "leb.decode_speed", "leb.page_size"}; }
+std::vector<std::string> lebBenchIds() { return {"leb.table1", "leb.decode_speed", "leb.page_size", "study.leb"}; }
 
 std::vector<BenchTable> lebBench(const BenchOptions& o) {
   std::vector<BenchTable> tables;
@@ -384,6 +422,7 @@ std::vector<BenchTable> lebBench(const BenchOptions& o) {
   if (globMatch(o.filter, "leb.table1")) tables.push_back(table1(o, sets));
   if (globMatch(o.filter, "leb.decode_speed")) tables.push_back(decodeSpeed(o, sets));
   if (globMatch(o.filter, "leb.page_size")) tables.push_back(pageSize(o, sets));
+  if (globMatch(o.filter, "study.leb")) tables.push_back(study(o, sets));
   return tables;
 }
 

@@ -39,18 +39,19 @@ std::vector<std::size_t> paretoFront(std::span<const TradeoffPoint> points) {
 }
 
 std::string frontCostSummary(std::span<const TradeoffPoint> points, std::span<const std::string> labels,
-                             std::span<const std::size_t> front) {
+                             std::span<const std::size_t> front, std::string_view quantity) {
+  const std::string q(quantity);
   if (front.empty()) return {};
   const std::size_t fast = front.front(), accurate = front.back();
   const TradeoffPoint& f = points[fast];
   const TradeoffPoint& a = points[accurate];
-  if (f.cost == a.cost && f.error == a.error) return labels[fast] + " is both the fastest and the most accurate";
+  if (f.cost == a.cost && f.error == a.error) return labels[fast] + " is both the fastest and the " + (q == "error" ? "most accurate" : "smallest");
   std::string s = "from " + labels[fast] + " to " + labels[accurate] + ": ";
   s += f.cost > 0.0 ? number("%.3g", a.cost / f.cost) + "x the time" : "from no time to " + number("%.3g s", a.cost);
   if (a.error == 0.0)
-    s += " for zero error (from " + number("%.3g", f.error) + ")";
+    s += " for zero " + q + " (from " + number("%.3g", f.error) + ")";
   else
-    s += " for " + number("%.3g", f.error / a.error) + "x less error";
+    s += " for " + number("%.3g", f.error / a.error) + "x less " + q;
   return s;
 }
 

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxref::conf {
@@ -27,8 +28,10 @@ std::vector<std::size_t> paretoFront(std::span<const TradeoffPoint> points);
 // What going along the front costs, from its fastest point to its most accurate one:
 // "from A to B: 3.2x the time for 40x less error", "... for zero error (from 0.004)", or, for a
 // front of one point, "A is both the fastest and the most accurate". `labels` name the points
-// (same size as points); `front` is paretoFront(points). Empty when the front is empty.
+// (same size as points); `front` is paretoFront(points); `quantity` names what the error axis
+// holds ("error", or "memory" for a size-against-time front: "... for 2x less memory", "A is both
+// the fastest and the smallest"). Empty when the front is empty.
 std::string frontCostSummary(std::span<const TradeoffPoint> points, std::span<const std::string> labels,
-                             std::span<const std::size_t> front);
+                             std::span<const std::size_t> front, std::string_view quantity = "error");
 
 }  // namespace voxref::conf

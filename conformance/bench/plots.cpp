@@ -11,8 +11,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <map>
-#include <optional>
 #include <sstream>
 
 #include "conformance/io/atomic_file.h"
@@ -22,90 +20,10 @@ extern char** environ;
 namespace voxref::conf {
 namespace {
 
-// A timing record of toJson(Timing), or null / {"not_run": ...}: its median when measured.
-std::optional<double> medianSeconds(const nlohmann::json& t) {
-  if (!t.is_object() || !t.contains("median_s") || !t["median_s"].is_number()) return std::nullopt;
-  const double s = t["median_s"].get<double>();
-  return std::isfinite(s) && s > 0.0 ? std::optional<double>(s) : std::nullopt;
-}
-
 std::string joined(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
   return s;
-}
-
-std::vector<AccuracyPlot> sparseGridPlots(const BenchTable& t) {
-  if (!t.data.contains("rows")) return {};
-  int level = -1;
-  for (const auto& r : t.data["rows"]) level = std::max(level, r.value("level", -1));
-  AccuracyPlot p;
-  p.id = t.id;
-  p.title = "Sparse grids: RMSE against GL time per framebuffer format (level " + std::to_string(level) + ")";
-  p.xLabel = "GL seconds per frame (median, llvmpipe)";
-  p.yLabel = "RMSE against the double combination technique";
-  std::vector<std::string> left;
-  for (const auto& r : t.data["rows"]) {
-    if (r.value("level", -1) != level) continue;
-    const std::string fb = r.value("framebuffer", "?");
-    const auto s = medianSeconds(r.value("gl", nlohmann::json()));
-    if (!s || !r["rmse"].is_number()) {
-      left.push_back(fb);
-      continue;
-    }
-    p.labels.push_back(fb);
-    p.points.push_back({*s, r["rmse"].get<double>()});
-  }
-  if (!left.empty()) p.note = "Not plotted (no GL time: emulated only): " + joined(left) + ".";
-  return {p};
-}
-
-std::vector<AccuracyPlot> addressPlots(const BenchTable& t) {
-  if (!t.data.contains("rows")) return {};
-  AccuracyPlot p;
-  p.id = t.id;
-  p.title = "Time-varying volumes: wrong fetches against GL decode time per address variant";
-  p.xLabel = "GL seconds per decode of an orbit frame (read-back included)";
-  p.yLabel = "share of wrong fetches (block or voxel)";
-  std::vector<std::string> left;
-  for (const auto& r : t.data["rows"]) {
-    const std::string name = r.value("variant", "?");
-    const auto s = medianSeconds(r.value("gl", nlohmann::json()));
-    const nlohmann::json& f = r.value("fetches", nlohmann::json::object());
-    const double samples = f.value("samples", 0.0);
-    if (!s || samples <= 0.0) {
-      left.push_back(name);
-      continue;
-    }
-    p.labels.push_back(name);
-    p.points.push_back({*s, (f.value("wrong_block", 0.0) + f.value("wrong_voxel", 0.0)) / samples});
-  }
-  if (!left.empty()) p.note = "Not plotted (no GL time or no samples): " + joined(left) + ".";
-  return {p};
-}
-
-std::vector<AccuracyPlot> isoPlots(const BenchTable& t) {
-  if (!t.data.contains("rows")) return {};
-  std::vector<AccuracyPlot> plots;
-  std::map<std::string, std::size_t> byDataSet;
-  for (const auto& r : t.data["rows"]) {
-    const std::string set = r.value("data_set", "?");
-    if (!byDataSet.count(set)) {
-      byDataSet[set] = plots.size();
-      AccuracyPlot p;
-      p.id = t.id + "." + std::to_string(plots.size() + 1);
-      p.title = "Isosurfaces, " + set + ": false culls against frame time per culling mode";
-      p.xLabel = "seconds per frame (queries + refinement + extraction + GL)";
-      p.yLabel = "false culls per frame (culled diamonds Embree shows visible)";
-      plots.push_back(p);
-    }
-    AccuracyPlot& p = plots[byDataSet[set]];
-    const double s = r.value("frame_seconds", 0.0);
-    if (!(s > 0.0)) continue;
-    p.labels.push_back(r.value("culling", "?"));
-    p.points.push_back({s, r.value("false_culls_per_frame", 0.0)});
-  }
-  return plots;
 }
 
 std::string quoted(std::string s) {  // a double-quoted string for gnuplot's data file and script
@@ -184,13 +102,6 @@ std::string labels(const AccuracyPlot& plot, const Drawn& drawn, bool logY) {
 
 }  // namespace
 
-std::vector<AccuracyPlot> accuracyPlots(const BenchTable& table) {
-  if (table.id == "sparsegrid.accuracy") return sparseGridPlots(table);
-  if (table.id == "timevarying.address_variants") return addressPlots(table);
-  if (table.id == "iso.table2") return isoPlots(table);
-  return {};
-}
-
 std::filesystem::path findOnPath(const std::string& name) {
   const char* path = std::getenv("PATH");
   std::istringstream dirs(path ? path : "");
@@ -211,7 +122,7 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
   f.script = dir / (plot.id + ".gp");
   f.data = dir / (plot.id + ".dat");
   f.front = paretoFront(plot.points);
-  f.costSummary = frontCostSummary(plot.points, plot.labels, f.front);
+  f.costSummary = frontCostSummary(plot.points, plot.labels, f.front, plot.quantity);
 
   // A log error axis cannot show 0: zero errors are drawn one decade below the smallest non-zero
   // one (and labelled "= 0"); when every error is 0 the axis is linear.
@@ -224,16 +135,18 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
   auto drawn = [&](const TradeoffPoint& p) { return p.error > 0.0 ? p.error : zeroAt; };
 
   std::ostringstream dat;
-  dat << "# " << plot.title << "\n# columns: seconds, error as drawn, error, on the Pareto front (1/0), variant\n"
+  dat << "# " << plot.title << "\n# columns: seconds (median), error as drawn, error, on the Pareto front (1/0), min seconds, max seconds, variant\n"
       << "# index 0: every variant; index 1: the Pareto front in order of time\n";
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
     const bool onFront = std::find(f.front.begin(), f.front.end(), i) != f.front.end();
+    const auto spread = i < plot.costSpread.size() ? plot.costSpread[i] : std::pair<double, double>(plot.points[i].cost, plot.points[i].cost);
     dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error) << " " << onFront << " "
-        << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
+        << number(spread.first) << " " << number(spread.second) << " " << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
   }
   dat << "\n\n";
   for (std::size_t i : f.front)
-    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error) << " 1 " << quoted(plot.labels[i]) << "\n";
+    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error) << " 1 "
+        << number(plot.points[i].cost) << " " << number(plot.points[i].cost) << " " << quoted(plot.labels[i]) << "\n";
   if (f.front.empty()) dat << "# (no points)\n";
 
   const std::string data = plot.id + ".dat";
@@ -249,7 +162,7 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
      << "set style line 1 pt 7 ps 1.4 lc rgb \"#1f77b4\"\nset style line 2 pt 6 ps 2.4 lw 2 lc rgb \"#d62728\"\n"
      << labels(plot, drawn, logY)
      << "set terminal pngcairo size 1000,650 noenhanced font \",10\"\nset output pngout\n"
-     << "plot " << quoted(data) << " index 0 using 1:2 with points ls 1 title \"variant\", \\\n"
+     << "plot " << quoted(data) << " index 0 using 1:2:5:6 with xerrorbars ls 1 title \"variant (bar: min - max time)\", \\\n"
      << "     " << quoted(data) << " index 1 using 1:2 with linespoints ls 2 title \"Pareto front\"\n"
      << "set terminal svg size 1000,650 noenhanced font \",10\"\nset output svgout\nreplot\nunset output\n";
 
@@ -273,7 +186,7 @@ std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const
   std::vector<std::string> front;
   for (std::size_t i : files.front) front.push_back(plot.labels[i]);
   if (!files.costSummary.empty())
-    md += "What each extra bit costs: " + files.costSummary + ". Pareto front, fastest first: " + joined(front) + ".";
+    md += std::string(plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") + files.costSummary + ". Pareto front, fastest first: " + joined(front) + ".";
   else
     md += "No variant could be plotted.";
   if (!plot.note.empty()) md += " " + plot.note;

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -28,16 +29,14 @@ struct AccuracyPlot {
   std::string title;
   std::string xLabel;  // what the cost is: "GL seconds per frame (median)"
   std::string yLabel;  // what the error is: "RMSE against the double reference"
+  std::string quantity = "error";  // what the vertical axis holds: "error" or "memory" (pareto.h)
   std::vector<std::string> labels;     // one per point: the variant
   std::vector<TradeoffPoint> points;   // cost in seconds (> 0), error >= 0
+  // Per point, the min and max cost of its repeated runs (drawn as a horizontal bar); empty when
+  // there is no spread to show.
+  std::vector<std::pair<double, double>> costSpread;
   std::string note;                    // variants left out and why; empty when none
 };
-
-// The plots a bench table's data gives: sparsegrid.accuracy (RMSE against GL time per frame,
-// highest level measured), timevarying.address_variants (wrong-fetch share against GL decode
-// time), iso.table2 (false culls per frame against frame time, one plot per data set). Other
-// tables give none. Reads only table.data (what bench.json holds), never the formatted rows.
-std::vector<AccuracyPlot> accuracyPlots(const BenchTable& table);
 
 // The path of the program `name` on PATH, or empty when there is none.
 std::filesystem::path findOnPath(const std::string& name);
@@ -57,7 +56,7 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
 // `relativeDir`), links to the SVG, script and data, and the "what each extra bit costs" line.
 std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const std::string& relativeDir);
 
-// The JSON record of one plot for bench.json.
+// The JSON record of one plot for the bench's results.json.
 nlohmann::json plotJson(const AccuracyPlot& plot, const PlotFiles& files, const std::string& relativeDir);
 
 }  // namespace voxref::conf

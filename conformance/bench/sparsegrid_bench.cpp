@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "conformance/bench/study.h"
 #include "conformance/catalog.h"
 #include "conformance/compare.h"
 #include "conformance/progress.h"
@@ -44,17 +45,6 @@ Timing sampleTiming(const ref::PlaneFrame& frame, const std::function<double(glm
   const double predicted = probeSeconds / probes * frame.planes;
   if (predicted > budget) return {predicted, predicted, predicted, 0, true};
   return measure([&] { (void)ref::sampleFrame(frame, fn, threads); });
-}
-
-std::string bytesText(double bytes) {
-  char buf[32];
-  if (bytes >= 1024.0 * 1024 * 1024)
-    std::snprintf(buf, sizeof buf, "%.1f GB", bytes / (1024.0 * 1024 * 1024));
-  else if (bytes >= 1024.0 * 1024)
-    std::snprintf(buf, sizeof buf, "%.1f MB", bytes / (1024.0 * 1024));
-  else
-    std::snprintf(buf, sizeof buf, "%.0f kB", bytes / 1024.0);
-  return buf;
 }
 
 SparseGridScene benchScene(int level, int width, int planes) {
@@ -202,7 +192,9 @@ BenchTable memoryTable(const BenchOptions& o) {
 }
 
 BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
-  const int first = o.quick ? 3 : 5, last = o.quick ? 4 : 10;
+  // Up to level 8: the study (study.sparsegrid) has every precision variant side by side; this
+  // table shows how the formats' errors move with the level, within the bench's 15 minutes.
+  const int first = o.quick ? 3 : 5, last = o.quick ? 4 : 8;
   const int width = o.quick ? 24 : 100, planes = o.quick ? 12 : 64;
   BenchTable t;
   t.id = "sparsegrid.accuracy";
@@ -270,7 +262,7 @@ BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::Pre
 }  // namespace
 
 std::vector<std::string> sparseGridBenchIds() {
-  return {"sparsegrid.table1_time", "sparsegrid.table2_memory", "sparsegrid.accuracy"};
+  return {"sparsegrid.table1_time", "sparsegrid.table2_memory", "sparsegrid.accuracy", "study.sparsegrid"};
 }
 
 std::vector<BenchTable> sparseGridBench(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
@@ -278,6 +270,7 @@ std::vector<BenchTable> sparseGridBench(const BenchOptions& o, gpu::Context& gl,
   if (globMatch(o.filter, "sparsegrid.table1_time")) tables.push_back(timeTable(o, gl, profile));
   if (globMatch(o.filter, "sparsegrid.table2_memory")) tables.push_back(memoryTable(o));
   if (globMatch(o.filter, "sparsegrid.accuracy")) tables.push_back(accuracyTable(o, gl, profile));
+  if (globMatch(o.filter, "study.sparsegrid")) tables.push_back(sparseGridStudy(o, gl, profile));
   return tables;
 }
 

@@ -2,10 +2,12 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 
 #include "conformance/bench/baselines.h"
+#include "conformance/bench/study.h"
 #include "conformance/catalog.h"
 #include "conformance/progress.h"
 #include "conformance/timevarying/fetch_classification.h"
@@ -127,13 +129,23 @@ BenchTable table3(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionP
   return t;
 }
 
-BenchTable addressVariants(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
-  BenchTable t;
-  t.id = "timevarying.address_variants";
-  t.title = "Time-varying volumes: address precision variants, their wrong fetches and their cost (data set 2, level 4)";
-  t.columns = {"decoder / index", "wrong fetches (orbit)", "wrong colours", "index bytes", "decode GL", "decode emulation"};
+// One variant's wrong fetches as the study's error: the share of samples that read another block or
+// voxel than floor(p * side), with every count in the figures.
+StudyVariant fetchVariant(const std::string& name, const FetchCounts& c, const ref::TimeVaryingTextures& tex) {
+  StudyVariant v;
+  v.name = name;
+  v.error = c.samples ? static_cast<double>(c.wrong()) / static_cast<double>(c.samples) : std::numeric_limits<double>::quiet_NaN();
+  if (!c.samples) v.missing = "no sample inside the volume";
+  v.figures = c.toJson();
+  v.figures.erase("examples");
+  v.memoryBytes = static_cast<double>(tex.stats.indexBytes + tex.stats.refinementBytes);
+  return v;
+}
+
+BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
   const Dataset& ds = plumes(o)[1];
   const ref::TransferFunction tf = ref::transferFunction("plume");
+  const int level = o.quick ? 3 : 4;
   struct V {
     const char* name;
     ref::DecoderVariant decoder;
@@ -147,39 +159,64 @@ BenchTable addressVariants(const BenchOptions& o, gpu::Context& gl, const emu::P
   const int n = o.quick ? 32 : 128;
   const ref::PlaneFrame frame = ref::orbitFrame(30.0, 20.0, n, n, n);
   const int step = static_cast<int>(ds.series.steps.size()) - 1;
+  const std::string error = "share of fetches that read another block or voxel than floor(p * side)";
+  const std::string memory = "index + refinement texels in use";
+  // The fetches are classified from the emulation under the driver's profile, which equals the GL
+  // read-back bit for bit (voxref conform --filter 'timevarying*'); a driver without a profile
+  // gets its time but no error figure.
+  Progress progress("voxref bench study.timevarying", 5 + static_cast<long>(emu::knownProfiles().size()));
+  long done = 0;
+  StudyGroup address{"decoder and index encoding", error, "GL decode of an orbit frame on " + gl.info().renderer + ", read-back included",
+                     memory, false, {}, ""};
   for (const V& v : variants) {
-    const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(ds.series, tf, {o.quick ? 3 : 4, v.encoding});
-    const Timing g = measureOnce([&] { (void)gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); });
-    std::string wrong = "n/a", colours = "n/a", emuTime = "n/a";
+    progress.update(done++, v.name);
+    const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(ds.series, tf, {level, v.encoding});
+    const Timing g = measure([&] { (void)gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); }, kStudyRuns);
+    StudyVariant sv;
     if (profile) {
-      emu::EmulatedDecode decoded;
-      const Timing e = measureOnce([&] { decoded = emu::emulateDecodePlanes(tex, v.decoder, step, frame, *profile, o.threads); });
-      const FetchCounts c = classifyFetches(tex, ds.series, tf, step, frame, decoded);
-      wrong = std::to_string(c.wrong()) + " of " + std::to_string(c.samples);
-      colours = std::to_string(c.wrongColour);
-      emuTime = formatSeconds(e);
-      t.data["rows"].push_back({{"variant", v.name}, {"fetches", c.toJson()}, {"index_bytes", tex.stats.indexBytes}, {"gl", toJson(g)}, {"emulation", toJson(e)}});
+      const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(tex, v.decoder, step, frame, *profile, o.threads);
+      sv = fetchVariant(v.name, classifyFetches(tex, ds.series, tf, step, frame, decoded), tex);
+    } else {
+      sv.name = v.name;
+      sv.memoryBytes = static_cast<double>(tex.stats.indexBytes + tex.stats.refinementBytes);
+      sv.missing = "no precision profile for this driver: fetches not classified";
     }
-    t.rows.push_back({v.name, wrong, colours, std::to_string(tex.stats.indexBytes), formatSeconds(g), emuTime});
+    sv.time = g;
+    address.variants.push_back(sv);
   }
-  t.notes = "Sample points of an orbit frame (" + std::to_string(n) + "^2 pixels x " + std::to_string(n) +
-            " planes, each decoded and read back), last time step. A fetch is wrong when it reads another voxel or block than "
-            "floor(p * side) (fetch_classification.h); fetches are those of the emulation, which equals the GL read-back bit for bit "
-            "(voxref conform --filter 'timevarying*').";
-  return t;
+  StudyGroup profiles{"fmod addressing per profile (paper decoder, rgba8 index)", error,
+                      "emulated decode of the orbit frame (CPU, " + std::to_string(ref::workerCount(o.threads)) + " thread(s))", memory, false, {},
+                      "The other drivers' arithmetic (fused or unfused multiply-add, repeat scaling, denormals) through their "
+                      "emulations; times are the emulator's."};
+  const ref::TimeVaryingTextures paper = ref::encodeTimeVarying(ds.series, tf, {level, ref::IndexEncoding::NormalizedRgba8});
+  for (const emu::PrecisionProfile& p : emu::knownProfiles()) {
+    progress.update(done++, std::string(p.name));
+    emu::EmulatedDecode decoded;
+    const Timing e = measure([&] { decoded = emu::emulateDecodePlanes(paper, ref::DecoderVariant::Paper, step, frame, p, o.threads); }, kStudyRuns);
+    StudyVariant sv = fetchVariant(std::string(p.name), classifyFetches(paper, ds.series, tf, step, frame, decoded), paper);
+    sv.time = e;
+    profiles.variants.push_back(sv);
+  }
+  progress.finish();
+  return studyTable("study.timevarying",
+                    "Study, time-varying volumes (plume data set 2, level " + std::to_string(level) + ", orbit frame " + std::to_string(n) + "^2 x " +
+                        std::to_string(n) + " samples, last time step)",
+                    {address, profiles},
+                    "A fetch is wrong when it reads another voxel or block than floor(p * side) (fetch_classification.h); the decoded "
+                    "colour of a wrong fetch may still be right (figures: wrong_colour).");
 }
 
 }  // namespace
 
 std::vector<std::string> timeVaryingBenchIds() {
-  return {"timevarying.table2", "timevarying.table3", "timevarying.address_variants"};
+  return {"timevarying.table2", "timevarying.table3", "study.timevarying"};
 }
 
 std::vector<BenchTable> timeVaryingBench(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
   std::vector<BenchTable> tables;
   if (globMatch(o.filter, "timevarying.table2")) tables.push_back(table2(o));
   if (globMatch(o.filter, "timevarying.table3")) tables.push_back(table3(o, gl, profile));
-  if (globMatch(o.filter, "timevarying.address_variants")) tables.push_back(addressVariants(o, gl, profile));
+  if (globMatch(o.filter, "study.timevarying")) tables.push_back(study(o, gl, profile));
   return tables;
 }
 

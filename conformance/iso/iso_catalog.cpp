@@ -8,6 +8,7 @@
 #include "conformance/io/image_io.h"
 #include "conformance/iso/iso_session.h"
 #include "conformance/iso/mesh_image_compare.h"
+#include "conformance/iso/surface_accuracy.h"
 #include "conformance/report/case_images.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
@@ -166,37 +167,19 @@ CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene
   nlohmann::json rows = nlohmann::json::array();
   std::string summary;
   for (double threshold : {8.0, 2.0, 0.5, 0.0}) {
-    ref::ViewRefinement refinement(bounds, scene.isovalue);
-    ref::RefinementBudget budget;
-    budget.threshold = threshold;
     const auto t0 = std::chrono::steady_clock::now();
-    refinement.update(camera, budget);
-    ref::ExtractionStats es;
-    const ref::IsoMesh mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, scene.isovalue, &es);
+    const ThresholdSurface surface = extractAtThreshold(bounds, field, camera, scene.isovalue, threshold);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const fx::RayImage img = fx::castMesh(mesh, camera, ctx.threads());
-    std::size_t both = 0, silhouette = 0;
-    double sum = 0.0, worst = 0.0;
-    for (std::size_t i = 0; i < img.depth.size(); ++i) {
-      const bool a = std::isfinite(img.depth[i]), b = std::isfinite(exact.depth[i]);
-      if (a != b) ++silhouette;
-      if (a && b) {
-        const double d = std::fabs(static_cast<double>(img.depth[i]) - exact.depth[i]);
-        ++both;
-        sum += d;
-        worst = std::max(worst, d);
-      }
-    }
-    const double mean = both == 0 ? 0.0 : sum / both;
+    const SurfaceError e = compareSurfaces(fx::castMesh(surface.mesh, camera, ctx.threads()), exact);
     rows.push_back({{"threshold_px", threshold},
-                    {"triangles", es.triangles},
-                    {"split_diamonds", refinement.mesh().splitCount()},
+                    {"triangles", surface.stats.triangles},
+                    {"split_diamonds", surface.splitDiamonds},
                     {"refine_and_extract_s", seconds},
-                    {"mean_depth_error", mean},
-                    {"max_depth_error", worst},
-                    {"silhouette_pixels", silhouette}});
-    summary += "threshold " + std::to_string(threshold).substr(0, 4) + ": " + std::to_string(es.triangles) + " triangles, mean depth error " +
-               std::to_string(mean).substr(0, 6) + ", " + std::to_string(silhouette) + " silhouette px; ";
+                    {"mean_depth_error", e.meanDepth},
+                    {"max_depth_error", e.maxDepth},
+                    {"silhouette_pixels", e.silhouettePixels}});
+    summary += "threshold " + std::to_string(threshold).substr(0, 4) + ": " + std::to_string(surface.stats.triangles) + " triangles, mean depth error " +
+               std::to_string(e.meanDepth).substr(0, 6) + ", " + std::to_string(e.silhouettePixels) + " silhouette px; ";
   }
   r.figures["thresholds"] = rows;
   r.oracles.push_back({"ideal", Verdict::Info, summary, {}});

@@ -127,6 +127,29 @@ void addHardCases(std::vector<Case>& cases) {
     latticeCamera(s, glm::dvec3(0.0, 1.0 / 32, 1.0 / 32), 1.0 / 16, 17, 16, 16);
     cases.push_back(combinationCase("sparsegrid.hard.cell_faces.l4", "query points on cell faces (x on nodes, y and z mid-cell)", s));
   }
+  // x 2^-24 (one float32 ulp above 0.5) either side of the nodes of the level-4 grid, where LINEAR
+  // changes cells, and of the mid-cells, where NEAREST changes texels; y on nodes, z mid-cell.
+  for (const bool mid : {false, true})
+    for (const ref::Filter filter : {ref::Filter::Linear, ref::Filter::Nearest}) {
+      SparseGridScene s = defaultSparseGridScene();
+      s.grid.level = 4;
+      s.textures.format = TexelFormat::R32F;
+      s.framebuffer = FramebufferFormat::RGBA32F;
+      s.sampler.filter = filter;
+      const ref::PlaneFrame f = ref::straddlingFrame(mid ? 1.0 / 32 : 0.0, 1.0 / 16, 16, {0, 1.0 / 16, 0}, 17, {0, 0, 17.0 / 32});
+      s.camera.origin = f.origin;
+      s.camera.dx = f.dx;
+      s.camera.dy = f.dy;
+      s.camera.dz = f.dz;
+      s.width = f.width;
+      s.height = f.height;
+      s.planes = f.planes;
+      const std::string where = mid ? "mid_cell_ulps" : "node_ulps";
+      cases.push_back(combinationCase("sparsegrid.hard." + where + ".l4." + std::string(ref::name(filter)),
+                                      std::string("query points one float32 ulp (2^-24) either side of the level-4 ") + (mid ? "mid-cells" : "nodes") +
+                                          " in x, " + std::string(ref::name(filter)),
+                                      s));
+    }
   for (ref::TextureSizing sizing : {ref::TextureSizing::Padded, ref::TextureSizing::Exact}) {
     SparseGridScene s = defaultSparseGridScene();  // samples at 0, 1/8, ..., 1: the last exactly 1.0
     s.grid.level = 5;
@@ -144,18 +167,31 @@ void addHardCases(std::vector<Case>& cases) {
     cases.push_back(combinationCase(std::string("sparsegrid.hard.data_extremes.") + field,
                                     std::string("data at the extreme ") + (field[0] == 'z' ? "0" : "1") + " everywhere, rgba8", s));
   }
-  for (const char* field : {"blobs_near_flt_max", "blobs_denormal"})
+  // Extreme floats in float textures; float framebuffer, so nothing clamps or rounds them away.
+  // Half floats go in unscaled, so that the texels hold the data itself (the paper's 1/n+ scaling
+  // would move them away from the extremes).
+  struct Extreme {
+    const char* field;
+    TexelFormat format;
+    ref::ScalingPolicy scaling;
+  };
+  for (const Extreme& e : {Extreme{"blobs_near_flt_max", TexelFormat::R32F, ref::ScalingPolicy::Scaled},
+                           Extreme{"blobs_denormal", TexelFormat::R32F, ref::ScalingPolicy::Scaled},
+                           Extreme{"blobs_near_half_max", TexelFormat::R16F, ref::ScalingPolicy::Unscaled},
+                           Extreme{"blobs_half_denormal", TexelFormat::R16F, ref::ScalingPolicy::Unscaled}})
     for (ref::Filter filter : {ref::Filter::Linear, ref::Filter::Nearest}) {
-      SparseGridScene s = defaultSparseGridScene();  // float texels, float framebuffer: nothing clamps or rounds them away
-      s.data.field = field;
+      SparseGridScene s = defaultSparseGridScene();
+      s.data.field = e.field;
       s.grid.level = 5;
-      s.textures.format = TexelFormat::R32F;
+      s.textures.format = e.format;
+      s.textures.scaling = e.scaling;
       s.sampler = {filter, ref::Wrap::ClampToEdge, 0.0};
       s.framebuffer = FramebufferFormat::RGBA32F;
       s.shading.mode = RenderMode::Mip;
-      cases.push_back(combinationCase(std::string("sparsegrid.hard.float_extremes.") + field + ".r32f." + str(ref::name(filter)),
-                                      std::string("extreme floats in r32f textures (") + field + "), " + str(ref::name(filter)) +
-                                          ", rgba32f framebuffer, level 5",
+      const std::string format(ref::name(e.format));
+      cases.push_back(combinationCase(std::string("sparsegrid.hard.float_extremes.") + e.field + "." + format + "." + str(ref::name(filter)),
+                                      "extreme floats in " + std::string(e.scaling == ref::ScalingPolicy::Unscaled ? "unscaled " : "") + format +
+                                          " textures (" + e.field + "), " + str(ref::name(filter)) + ", rgba32f framebuffer, level 5",
                                       s));
     }
   for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {

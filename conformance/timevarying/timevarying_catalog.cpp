@@ -74,7 +74,7 @@ CaseResult capacityExceeded(CaseContext& ctx) {
 
 std::vector<Case> timeVaryingCases() {
   std::vector<Case> cases;
-  const char* frames[] = {"voxel_centres", "voxel_faces", "block_faces", "coordinate_one", "orbit"};
+  const char* frames[] = {"voxel_centres", "voxel_faces", "face_ulps", "block_faces", "coordinate_one", "orbit"};
   for (const Config& c : kConfigs)
     for (const char* frame : frames) {
       TimeVaryingScene s = blobs(c);

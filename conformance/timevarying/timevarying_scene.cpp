@@ -38,8 +38,9 @@ TimeVaryingScene parseTimeVaryingScene(const nlohmann::json& j) {
   s.decoder = *d;
   s.composite = r.get<bool>("composite", false);
   s.frame = r.get<std::string>("frame", s.frame);
-  if (s.frame != "voxel_centres" && s.frame != "voxel_faces" && s.frame != "block_faces" && s.frame != "coordinate_one" && s.frame != "orbit")
-    throw JsonFieldError("frame: '" + s.frame + "' is not one of voxel_centres, voxel_faces, block_faces, coordinate_one, orbit");
+  if (s.frame != "voxel_centres" && s.frame != "voxel_faces" && s.frame != "face_ulps" && s.frame != "block_faces" && s.frame != "coordinate_one" &&
+      s.frame != "orbit")
+    throw JsonFieldError("frame: '" + s.frame + "' is not one of voxel_centres, voxel_faces, face_ulps, block_faces, coordinate_one, orbit");
   if (r.has("image")) {
     const auto image = r.get<std::vector<int>>("image");
     if (image.size() != 2 || image[0] < 1 || image[1] < 1 || image[0] > 4096 || image[1] > 4096)
@@ -105,6 +106,8 @@ ref::PlaneFrame makeFrame(const TimeVaryingScene& s, const ref::TimeVaryingLayou
   const int n = s.side;
   if (s.frame == "voxel_centres") return ref::explicitFrame({0, 0, 0}, {h, 0, 0}, {0, h, 0}, {0, 0, h}, n, n, n);
   if (s.frame == "voxel_faces") return ref::explicitFrame(glm::dvec3(-h / 2), {h, 0, 0}, {0, h, 0}, {0, 0, h}, n, n, n);
+  if (s.frame == "face_ulps")  // x 2^-24 either side of every voxel face (block faces among them), y at voxel centres
+    return ref::straddlingFrame(0.0, h, n, {0, h, 0}, n, {0, h / 2, (n / 2 + 0.5) * h});
   if (s.frame == "block_faces") {
     const double b = h * layout.blockSide;  // x on the block faces 0, r, 2r, ...; y and z at voxel centres
     return ref::explicitFrame({-b / 2, 0, 0}, {b, 0, 0}, {0, h, 0}, {0, 0, h}, layout.cells, n, n);

@@ -26,7 +26,8 @@ struct TimeVaryingScene {
   ref::DecoderVariant decoder = ref::DecoderVariant::TexelFetch;
   bool composite = false;       // false: every plane decoded and read back separately
   // Sample points: "voxel_centres", "voxel_faces", "block_faces", "coordinate_one" (explicit
-  // frames on the volume's lattice) or "orbit" (azimuth 30, elevation 20).
+  // frames on the volume's lattice), "face_ulps" (x 2^-24 either side of every voxel face:
+  // ref::straddlingFrame) or "orbit" (azimuth 30, elevation 20).
   std::string frame = "voxel_centres";
   int width = 64, height = 64, planes = 48;  // orbit frames only
   std::vector<int> onlySteps;                // empty: every step

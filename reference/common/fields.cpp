@@ -96,7 +96,7 @@ double ridge(double x, double y, double z) {
 
 std::vector<std::string> analyticFieldNames() {
   return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9", "gaussian_buckyball",
-          "blobs_near_flt_max", "blobs_denormal"};
+          "blobs_near_flt_max", "blobs_denormal", "blobs_near_half_max", "blobs_half_denormal"};
 }
 
 Field analyticField(std::string_view name) {
@@ -112,6 +112,8 @@ Field analyticField(std::string_view name) {
   // significand. 2^126: a quarter of FLT_MAX at the peak, sums of passes stay finite; 2^-140:
   // every value (and every texel, after the 1/n+ scaling) is a float32 denormal.
   if (name == "blobs_near_flt_max") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), 126); }};
+  if (name == "blobs_near_half_max") return {std::string(name), [](double x, double y, double z) { return 65000.0 * gaussianBlobs(x, y, z); }};
+  if (name == "blobs_half_denormal") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -15); }};
   if (name == "blobs_denormal") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -140); }};
   std::string known;
   for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;

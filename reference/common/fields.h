@@ -42,6 +42,8 @@ struct Field {
 //                     Gregorski et al. 2004 ("a synthetic dataset made from Gaussian functions")
 //   blobs_near_flt_max gaussian_blobs * 2^126 (peak near FLT_MAX / 4): extreme floats
 //   blobs_denormal    gaussian_blobs * 2^-140: every nonzero value a float32 denormal
+//   blobs_near_half_max gaussian_blobs * 65000 (peak near the largest half float, 65504)
+//   blobs_half_denormal gaussian_blobs * 2^-15: every nonzero value below 2^-14, a half denormal
 // Throws std::invalid_argument naming the known fields for an unknown name.
 Field analyticField(std::string_view name);
 std::vector<std::string> analyticFieldNames();

@@ -46,10 +46,22 @@ PlaneFrame orbitFrame(double azimuthDeg, double elevationDeg, int width, int hei
 
 // A frame given explicitly (for hard cases that put samples exactly on nodes or faces).
 // Throws std::invalid_argument, naming the offending vector, if it is not float32-exact.
+// A frame off the lattice is still float32-exact when, checked sample by sample (frames of up to
+// 2^20 samples), every term and every partial sum in every order of association is a float32
+// below magnitude 4.
 PlaneFrame explicitFrame(glm::dvec3 origin, glm::dvec3 dx, glm::dvec3 dy, glm::dvec3 dz, int width, int height,
                          int planes);
 
-// Empty when the frame satisfies the lattice and magnitude conditions above, else the reason.
+// Empty when the frame satisfies the lattice and magnitude conditions above (or, off the lattice,
+// the sample-by-sample check of explicitFrame), else the reason.
 std::string float32ExactnessViolation(const PlaneFrame& frame);
+
+// Samples 2^-24 either side of the planes x = offset + m * spacing, m = 0 .. faces - 1: pixel 0
+// at the face - 2^-24, pixel 1 at the face + 2^-24, row m; plane k at first + k * rowStep (y and z
+// only; the x components of rowStep and first are ignored). 2^-24 is one float32 ulp on either
+// side of a face in (0.5, 1), and 2^-24 / ulp(x) ulps nearer 0 (a face at 0 gets -2^-24, outside
+// the volume, and +2^-24). Meant for power-of-two spacings and offsets. Throws
+// std::invalid_argument when the frame is not float32-exact.
+PlaneFrame straddlingFrame(double offset, double spacing, int faces, glm::dvec3 rowStep, int rows, glm::dvec3 first);
 
 }  // namespace voxref::ref

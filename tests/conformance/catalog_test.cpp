@@ -29,7 +29,10 @@ TEST(Catalog, CoversTheIssueMatrix) {
                          "sparsegrid.hard.level1", "sparsegrid.hard.level12.rgba8", "sparsegrid.hard.level12.rgba32f"})
     EXPECT_EQ(selectCases(cases, id).size(), 1u) << id;
   // The hard-case catalogue of issue 7 (docs/hard_cases.md): each trap it adds.
-  EXPECT_EQ(selectCases(cases, "sparsegrid.hard.float_extremes.*").size(), 4u);
+  EXPECT_EQ(selectCases(cases, "sparsegrid.hard.float_extremes.*.r32f.*").size(), 4u);
+  EXPECT_EQ(selectCases(cases, "sparsegrid.hard.float_extremes.*.r16f.*").size(), 4u);
+  EXPECT_EQ(selectCases(cases, "sparsegrid.hard.*_ulps.l4.*").size(), 4u);      // node and mid-cell, linear and nearest
+  EXPECT_EQ(selectCases(cases, "timevarying.decode.*.face_ulps").size(), 5u);  // every decoder
   EXPECT_EQ(selectCases(cases, "timevarying.hard.empty_noise_full.*").size(), 5u);  // every decoder
   for (const char* id : {"iso.hard.empty_volume", "iso.hard.full_volume"}) EXPECT_EQ(selectCases(cases, id).size(), 1u) << id;
 }

@@ -10,9 +10,11 @@ cmake_minimum_required(VERSION 3.25)
 #               filter shows, and the partial banner exactly when the run was incomplete;
 #   case        the page the index links to for the first failing case with worst pixels (else the
 #               first case with them, else the first case): its status and one magnified row per
-#               worst pixel.
+#               worst pixel;
+#   bench       index.html of `voxref bench` (REPORT_DIR holds the bench's results.json): one
+#               figure per plot results.json lists, every image loaded, one section per table.
 # Arguments (-D): CHROMIUM (the browser; empty or NOTFOUND: the test is skipped), REPORT_DIR,
-# PAGE (index | case), SCRATCH (a directory for Chromium's profile and the DOM dump).
+# PAGE (index | case | bench), SCRATCH (a directory for Chromium's profile and the DOM dump).
 # Negative controls: BREAK (script_error | wrong_count | missing_image) checks a copy of the page
 # (beside it, so that relative paths still resolve) spoiled that way, and EXPECT_PROBLEM (a
 # regular expression) must then match the problems found; the script fails if it does not.
@@ -26,8 +28,12 @@ foreach(arg REPORT_DIR PAGE SCRATCH)
 endforeach()
 
 file(READ "${REPORT_DIR}/results.json" results)
-string(JSON complete GET "${results}" complete)
-string(JSON caseCount LENGTH "${results}" cases)
+if(PAGE STREQUAL "bench")
+  set(complete TRUE)
+else()
+  string(JSON complete GET "${results}" complete)
+  string(JSON caseCount LENGTH "${results}" cases)
+endif()
 set(statuses pass warn fail skip crash timeout)
 set(problems "")
 macro(problem text)
@@ -35,7 +41,7 @@ macro(problem text)
 endmacro()
 
 # The page to load.
-if(PAGE STREQUAL "index")
+if(PAGE STREQUAL "index" OR PAGE STREQUAL "bench")
   set(page "${REPORT_DIR}/index.html")
 elseif(PAGE STREQUAL "case")
   set(chosen "")
@@ -70,7 +76,7 @@ elseif(PAGE STREQUAL "case")
     message(FATAL_ERROR "index.html links ${caseId} to ${CMAKE_MATCH_1}, which does not exist")
   endif()
 else()
-  message(FATAL_ERROR "PAGE must be index or case, not '${PAGE}'")
+  message(FATAL_ERROR "PAGE must be index, case or bench, not '${PAGE}'")
 endif()
 
 # A spoiled copy for a negative control.
@@ -82,6 +88,7 @@ if(BREAK)
     string(REGEX REPLACE "(id=\"count-pass\"><a [^>]*>)[0-9]+<" "\\1987654<" html "${html}")
   elseif(BREAK STREQUAL "missing_image")
     string(REPLACE "src=\"../images/" "src=\"../images/no-such-" html "${html}")
+    string(REPLACE "src=\"plots/" "src=\"plots/no-such-" html "${html}")
   else()
     message(FATAL_ERROR "unknown BREAK '${BREAK}'")
   endif()
@@ -142,7 +149,26 @@ function(shown_count id out)
   endif()
 endfunction()
 
-if(PAGE STREQUAL "index")
+if(PAGE STREQUAL "bench")
+  string(JSON plotCount LENGTH "${results}" plots)
+  string(REGEX MATCHALL "<figure class=\"bench-plot\"" figures "${dom}")
+  list(LENGTH figures figureCount)
+  if(NOT figureCount EQUAL plotCount OR plotCount EQUAL 0)
+    problem("the page shows ${figureCount} plots, results.json lists ${plotCount}")
+  endif()
+  if(NOT dom MATCHES "data-images-loaded=\"${plotCount} of ${plotCount}\"")
+    problem("the page did not load its ${plotCount} plot images")
+  endif()
+  string(JSON tableCount LENGTH "${results}" tables)
+  math(EXPR last "${tableCount} - 1")
+  foreach(i RANGE ${last})
+    string(JSON id GET "${results}" tables ${i} id)
+    if(NOT dom MATCHES "<section class=\"bench-table\" id=\"${id}\">")
+      problem("the page has no section for table ${id}")
+    endif()
+  endforeach()
+  message("bench page: ${plotCount} plots and ${tableCount} tables checked")
+elseif(PAGE STREQUAL "index")
   foreach(s IN LISTS statuses)
     string(JSON expected GET "${results}" summary ${s})
     shown_count("count-${s}" shown)

@@ -29,3 +29,15 @@ voxref_html_check(report.html.case_page_in_chromium case)
 voxref_html_check(report.html.negative_control.script_error index BREAK script_error EXPECT_PROBLEM "voxrefNoSuchFunction is not defined")
 voxref_html_check(report.html.negative_control.wrong_count index BREAK wrong_count EXPECT_PROBLEM "count-pass shows 987654, results.json says")
 voxref_html_check(report.html.negative_control.missing_image case BREAK missing_image EXPECT_PROBLEM "could not load img [^ ]*/images/no-such-")
+
+# The page of `voxref bench` (bench.study.quick in tests/CMakeLists.txt sets it up): every plot
+# shown and loaded, a section per table; a plot that does not load must be caught.
+add_test(NAME bench.study.page_in_chromium
+         COMMAND ${CMAKE_COMMAND} "-DCHROMIUM=${VOXREF_CHROMIUM}" "-DREPORT_DIR=${test_out}/bench-study" -DPAGE=bench
+                 "-DSCRATCH=${test_out}/chromium/bench-study" -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+add_test(NAME bench.study.page_negative_control.missing_image
+         COMMAND ${CMAKE_COMMAND} "-DCHROMIUM=${VOXREF_CHROMIUM}" "-DREPORT_DIR=${test_out}/bench-study" -DPAGE=bench -DBREAK=missing_image
+                 "-DEXPECT_PROBLEM=could not load img [^ ]*plots/no-such-" "-DSCRATCH=${test_out}/chromium/bench-study-nc"
+                 -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+set_tests_properties(bench.study.page_in_chromium bench.study.page_negative_control.missing_image PROPERTIES
+                     FIXTURES_REQUIRED bench_study LABELS "bench;report" TIMEOUT 300 SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")

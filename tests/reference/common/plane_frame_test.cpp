@@ -67,5 +67,36 @@ TEST(ExplicitFrame, RejectsOffLatticeAndHugeFrames) {
   EXPECT_EQ(f.sample(16, 16, 16), glm::dvec3(1.0));  // coordinate 1.0 exactly
 }
 
+TEST(ExplicitFrame, OffTheLatticeButExactSampleBySample) {
+  const double u = std::ldexp(1.0, -24);
+  // dx = 2^-23 is off the 2^-21 lattice; every sample 0.75 +- 2^-24 is a float32.
+  const PlaneFrame f = explicitFrame({0.75 - 2 * u, 0.5, 0.5}, {2 * u, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1);
+  EXPECT_EQ(f.sample(0, 0, 0).x, 0.75 - u);
+  EXPECT_EQ(f.sample(1, 0, 0).x, 0.75 + u);
+  // Off the lattice and not exact: 0.5 + 2^-26 is not a float32.
+  EXPECT_THROW(explicitFrame({0.5, 0.5, 0.5}, {std::ldexp(1.0, -25), 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1), std::invalid_argument);
+}
+
+TEST(StraddlingFrame, OneUlpEitherSideOfEveryFace) {
+  const double u = std::ldexp(1.0, -24);
+  const PlaneFrame f = straddlingFrame(1.0 / 32, 1.0 / 16, 16, {0, 1.0 / 16, 0.0}, 17, {0, 0, 0.53125});
+  ASSERT_EQ(f.width, 2);
+  ASSERT_EQ(f.height, 16);
+  ASSERT_EQ(f.planes, 17);
+  for (int k = 0; k < f.planes; ++k)
+    for (int m = 0; m < f.height; ++m) {
+      const double face = 1.0 / 32 + m / 16.0;
+      const glm::dvec3 below = f.sample(0, m, k), above = f.sample(1, m, k);
+      EXPECT_EQ(below.x, face - u);
+      EXPECT_EQ(above.x, face + u);
+      EXPECT_EQ(below.y, k / 16.0);
+      EXPECT_EQ(below.z, 0.53125);
+      if (face > 0.5) {  // one float32 ulp: the neighbours of the face itself
+        EXPECT_EQ(static_cast<double>(std::nextafter(static_cast<float>(face), 0.0f)), below.x);
+        EXPECT_EQ(static_cast<double>(std::nextafter(static_cast<float>(face), 2.0f)), above.x);
+      }
+    }
+}
+
 }  // namespace
 }  // namespace voxref::ref
