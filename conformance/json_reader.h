@@ -2,9 +2,13 @@
 // range; errors name the full path of the field ("texture.format") and what was expected.
 #pragma once
 
+#include <cstdint>
+#include <limits>
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -26,8 +30,14 @@ class JsonObjectReader {
   T get(const char* key) {
     const nlohmann::json& v = at(key);
     try {
+      // Integers are checked before nlohmann converts them: its get<int>() of 1e300 is undefined
+      // behaviour, of 2.5 or 2^40 a silent truncation.
       if constexpr (std::is_same_v<T, int>) {
-        if (!v.is_number_integer()) throw JsonFieldError("");
+        if (!isInt(v)) throw JsonFieldError("");
+      } else if constexpr (std::is_same_v<T, std::vector<int>>) {
+        if (!v.is_array()) throw JsonFieldError("");
+        for (const nlohmann::json& e : v)
+          if (!isInt(e)) throw JsonFieldError("");
       } else if constexpr (std::is_same_v<T, double>) {
         if (!v.is_number()) throw JsonFieldError("");
       } else if constexpr (std::is_same_v<T, bool>) {
@@ -53,9 +63,16 @@ class JsonObjectReader {
 
  private:
   const nlohmann::json& at(const char* key);
+  // An integer within int's range (a JSON integer: not 2.0).
+  static bool isInt(const nlohmann::json& v) {
+    if (v.is_number_unsigned()) return v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    return v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() && v.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  }
   template <class T>
   static std::string typeName() {
     if constexpr (std::is_same_v<T, int>) return "an integer";
+    if constexpr (std::is_same_v<T, std::vector<int>>) return "an array of integers";
+    if constexpr (std::is_same_v<T, std::vector<double>>) return "an array of numbers";
     if constexpr (std::is_same_v<T, double>) return "a number";
     if constexpr (std::is_same_v<T, bool>) return "true or false";
     if constexpr (std::is_same_v<T, std::string>) return "a string";

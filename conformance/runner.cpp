@@ -193,7 +193,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
       now.complete = false;
       std::vector<CaseResult> results;
       collect(slots, cases, results, now.notRun);
-      io::writeFileAtomically(options.outDir / "results.json", resultsJson(now, results).dump(2) + "\n");
+      io::writeFileAtomically(options.outDir / "results.json", resultsText(now, results));
       dirty = false;
     };
     isolation::PoolOptions pool;

@@ -1,5 +1,6 @@
 // voxref check-shader: one case with the user's fragment shader in place of the built-in stage,
 // judged by the case's own oracles (docs/shader-interface.md).
+#include <cstdio>
 #include <iostream>
 
 #include "conformance/case_context.h"
@@ -50,6 +51,32 @@ void printResult(const conf::CaseResult& r, const gpu::ShaderOverride& shader) {
   std::cout << "status: " << conf::name(r.status) << (r.message.empty() ? "" : ": " + r.message) << "\n";
 }
 
+// A GLSL shader is UTF-8 text (GLSL 4.50, section 3.1); a NUL byte would silently end the source
+// GL compiles, and other bytes draw errors from the driver that name no position (Mesa: "lacks
+// main"). Throws UsageError naming the file, the byte's offset, line and column.
+void checkShaderText(const std::string& source, const std::filesystem::path& file) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < source.size();) {
+    const auto c = static_cast<unsigned char>(source[i]);
+    std::size_t length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xe ? 3 : (c >> 3) == 0x1e ? 4 : 0;
+    for (std::size_t k = 1; k < length; ++k)
+      if (i + k >= source.size() || (static_cast<unsigned char>(source[i + k]) & 0xc0) != 0x80) length = 0;
+    if (c == 0 || length == 0) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02x", c);
+      throw conf::UsageError(file.string() + ": byte " + std::to_string(i) + " (line " + std::to_string(line) + ", column " + std::to_string(column) +
+                             "): " + hex + (c == 0 ? " (NUL)" : "") + " is not UTF-8 text; a GLSL shader is UTF-8 text without NUL bytes");
+    }
+    if (c == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+    i += length;
+  }
+}
+
 void writeReport(const CheckShaderOptions& o, const conf::RunInfo& run, const std::vector<conf::CaseResult>& results) {
   conf::writeReportFiles(o.out, run, results);
   std::cout << "report: " << (o.out / "index.html").string() << " (results.json, junit.xml beside it)\n";
@@ -64,6 +91,7 @@ int runCheckShader(const CheckShaderOptions& o) {
   if (o.printInterface) return printInterface(c, stage);
   if (o.shader.empty()) throw conf::UsageError("--shader FILE.frag is required (or --print-interface)");
   const gpu::ShaderOverride shader{std::string(stage.name), io::readWholeFile(o.shader), o.shader.string()};
+  checkShaderText(shader.source, o.shader);
 
   const auto driver = gpu::parseDriver(o.driver);
   if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "' (llvmpipe, softpipe or egl)");

@@ -27,7 +27,7 @@ nlohmann::json loadScene(const std::string& spec) {
     std::ifstream in(spec);
     try {
       return nlohmann::json::parse(in);
-    } catch (const nlohmann::json::parse_error& e) {
+    } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number beyond double
       throw conf::UsageError("scene file " + spec + " is not valid JSON: " + e.what());
     }
   }
@@ -97,7 +97,7 @@ int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scen
 int runRender(const RenderOptions& o) {
   if (o.out.extension() != ".exr") throw conf::UsageError("--out must name an .exr file, got " + o.out.string());
   const nlohmann::json json = loadScene(o.scene);
-  if (json.is_object() && json.value("system", "sparsegrid") == "timevarying") {
+  if (json.is_object() && json.contains("system") && json["system"] == "timevarying") {  // value() would throw for a non-string
     try {
       return renderTimeVarying(o, conf::parseTimeVaryingScene(json));
     } catch (const conf::JsonFieldError& e) {
@@ -110,7 +110,17 @@ int runRender(const RenderOptions& o) {
   } catch (const conf::SceneError& e) {
     throw conf::UsageError("scene " + o.scene + ": " + e.what());
   }
-  const conf::PreparedScene prepared = conf::prepareScene(scene);
+  // What only preparing the scene finds (its camera frame, pass order and volume file) is named
+  // with the scene file too.
+  const conf::PreparedScene prepared = [&] {
+    try {
+      return conf::prepareScene(scene);
+    } catch (const conf::SceneError& e) {
+      throw conf::UsageError("scene " + o.scene + ": " + e.what());
+    } catch (const io::IoError& e) {
+      throw io::IoError("scene " + o.scene + ": data.volume: " + e.what());
+    }
+  }();
   conf::Progress progress("voxref render (" + o.backend + ")", prepared.frame.planes);
   auto onPlane = [&](int done) { progress.update(done); };
   ref::SampleStack samples;

@@ -1,8 +1,14 @@
 // voxref encode | decode | info --codec leb: lossless LEB compression (Gregorski et al. 2004) of
 // the user's raw volumes.
+#include <sys/resource.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
+#include <new>
+#include <optional>
 
 #include "conformance/cli/codecs.h"
 #include "conformance/io/atomic_file.h"
@@ -19,6 +25,17 @@ namespace {
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The bytes this process may still map under its address-space limit (ulimit -v, RLIMIT_AS), or
+// nothing when it has none.
+std::optional<std::uint64_t> addressSpaceLeft() {
+  rlimit limit{};
+  if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
+  std::uint64_t mapped = 0;  // the first field of /proc/self/statm: the whole mapped size, in pages
+  if (std::ifstream statm("/proc/self/statm"); statm >> mapped) mapped *= static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  const auto cap = static_cast<std::uint64_t>(limit.rlim_cur);
+  return cap > mapped ? cap - mapped : 0;
 }
 
 std::string ratioText(double r) {
@@ -76,13 +93,17 @@ int encodeLebCommand(const EncodeOptions& o) {
     throw conf::UsageError(e.what());
   }
   const double seconds = secondsSince(t0);
-  io::writeLebFile(o.out, stream);
-  std::cout << "wrote " << o.out.string() << " in " << seconds << " s\n";
+  // The stream and its bounds are written together: a failure leaves neither.
+  std::string bounds;
   if (!o.boundsOut.empty()) {
     const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
-    io::writeFileAtomically(o.boundsOut, ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values())));
-    std::cout << "wrote the diamond bounds into " << o.boundsOut.string() << "\n";
+    bounds = ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values()));
   }
+  std::vector<io::FileContent> files{{o.out, stream}};
+  if (!o.boundsOut.empty()) files.push_back({o.boundsOut, bounds});
+  io::writeFilesAtomically(files);
+  std::cout << "wrote " << o.out.string() << " in " << seconds << " s\n";
+  if (!o.boundsOut.empty()) std::cout << "wrote the diamond bounds into " << o.boundsOut.string() << "\n";
   printInfo(ref::parseLebStream(std::move(stream)), std::cout);
   return 0;
 }
@@ -90,11 +111,24 @@ int encodeLebCommand(const EncodeOptions& o) {
 int decodeLebCommand(const DecodeOptions& o) {
   if (o.step >= 0) throw conf::UsageError("--step is for the timevarying codec");
   const ref::LebStream s = io::readLebFile(o.input);
+  if (!o.gradientsOut.empty() && !s.channel(ref::LebChannelKind::Gradients))
+    throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
+  // A small stream can describe a volume whose grid is large (the grid is the cube that covers
+  // the volume): what decoding will allocate is known from the header and refused here, before
+  // any of it is allocated, when it exceeds what this process may still map.
+  const std::uint64_t need = ref::lebDecodeMemoryBytes(s) + ref::sampleCount(s.dims) * static_cast<std::uint64_t>(s.sampleBits / 8);
+  const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (the " +
+                               std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) + " that covers " +
+                               dimsText(s.dims) + ", at 2 bytes per point and component, plus the volume)";
+  if (const std::optional<std::uint64_t> room = addressSpaceLeft(); room && need > *room)
+    throw io::IoError(needText + ", more than the " + std::to_string(*room) + " bytes this process may still allocate (ulimit -v)");
   ref::LebDecoded d;
   try {
     d = ref::decodeLeb(s);
   } catch (const ref::StreamError& e) {
     throw io::FormatError(o.input.string() + ": " + e.what());
+  } catch (const std::bad_alloc&) {
+    throw io::IoError(needText + ": out of memory");
   }
   // Samples as stored: uint8, or uint16 little endian.
   std::string raw;
@@ -107,11 +141,10 @@ int decodeLebCommand(const DecodeOptions& o) {
       raw.push_back(static_cast<char>(v >> 8));
     }
   }
-  if (!o.gradientsOut.empty()) {
-    if (d.gradients.empty()) throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
-    io::writeFileAtomically(o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size()));
-  }
-  io::writeFileAtomically(o.out, raw);
+  // The volume and its gradients are written together: a failure leaves neither.
+  std::vector<io::FileContent> files{{o.out, raw}};
+  if (!o.gradientsOut.empty()) files.push_back({o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size())});
+  io::writeFilesAtomically(files);
   std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into " << o.out.string();
   if (!o.gradientsOut.empty()) std::cout << " and their gradients (3 int8 per sample) into " << o.gradientsOut.string();
   std::cout << "\n";

@@ -16,6 +16,12 @@ namespace {
 ref::TimeSeries loadSeries(const EncodeOptions& o) {
   if (o.plume) {
     if (!o.inputs.empty()) throw conf::UsageError("--plume and --input exclude each other");
+    // The container's limits (FORMAT.md: side 4..512, time_steps 1..65536), checked before the
+    // plume is allocated (side^3 bytes per step).
+    if (o.plumeSide < 8 || o.plumeSide > 512 || (o.plumeSide & (o.plumeSide - 1)) != 0)
+      throw conf::UsageError("--side " + std::to_string(o.plumeSide) + ": expected a power of two in 8..512 (the .vxtv container holds sides up to 512)");
+    if (o.plumeSteps < 1 || o.plumeSteps > 65536)
+      throw conf::UsageError("--steps " + std::to_string(o.plumeSteps) + ": expected 1..65536 (the .vxtv container's time steps)");
     ref::PlumeOptions p{o.plumeSide, o.plumeSteps};
     if (o.sparseness > 0.0) return ref::dischargePlumeWithSparseness(p, o.sparseness);
     return ref::dischargePlume(p);
@@ -34,7 +40,7 @@ ref::TimeSeries loadSeries(const EncodeOptions& o) {
   try {
     return ref::padToCube(volumes);
   } catch (const std::invalid_argument& e) {
-    throw conf::UsageError(e.what());
+    throw conf::UsageError("--dims " + dimsText(dims) + ": " + e.what());  // "extent 600 exceeds 512" (the container's largest side)
   }
 }
 
@@ -100,9 +106,9 @@ int encodeTimeVaryingCommand(const EncodeOptions& o) {
 
 int decodeTimeVaryingCommand(const DecodeOptions& o) {
   const io::TimeVaryingFile f = io::readTimeVarying(o.input);
-  io::ensureDirectory(o.out);
   const int steps = f.textures.layout.timeSteps;
   if (o.step >= steps) throw conf::UsageError("--step " + std::to_string(o.step) + " is outside 0.." + std::to_string(steps - 1));
+  io::ensureDirectory(o.out);  // only once the input and the options are known to be good
   conf::Progress progress("voxref decode", steps);
   for (int t = o.step < 0 ? 0 : o.step; t < (o.step < 0 ? steps : o.step + 1); ++t) {
     progress.update(t);

@@ -1,6 +1,7 @@
 #include "conformance/io/atomic_file.h"
 
 #include <fstream>
+#include <memory>
 #include <sstream>
 
 #include <unistd.h>
@@ -31,10 +32,12 @@ void AtomicOutput::commit() {
   committed_ = true;
 }
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
-  AtomicOutput out(path);
+namespace {
+
+// Writes `content` to the temporary of `out`; errors name `path`, the destination.
+void writeTemporary(const AtomicOutput& out, const std::filesystem::path& path, std::string_view content) {
   std::FILE* f = std::fopen(out.temporary().c_str(), "wb");
-  if (!f) throw IoError("cannot create " + out.temporary().string() + ": " + std::strerror(errno));
+  if (!f) throw IoError("cannot write " + path.string() + ": cannot create " + out.temporary().string() + ": " + std::strerror(errno));
   const std::size_t written = std::fwrite(content.data(), 1, content.size(), f);
   const int flushed = std::fflush(f);
   const int err = errno;
@@ -42,7 +45,31 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
   const int closed = std::fclose(f);
   if (written != content.size() || flushed != 0 || synced != 0 || closed != 0)
     throw IoError("cannot write " + path.string() + ": " + std::strerror(err ? err : EIO));
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view content) {
+  AtomicOutput out(path);
+  writeTemporary(out, path, content);
   out.commit();
+}
+
+void writeFilesAtomically(const std::vector<FileContent>& files) {
+  // What would make a rename fail is refused before anything is written.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(files[i].path, ec)) throw IoError("cannot write " + files[i].path.string() + ": it is a directory");
+    for (std::size_t j = 0; j < i; ++j)
+      if (files[j].path.lexically_normal() == files[i].path.lexically_normal())
+        throw IoError("cannot write " + files[i].path.string() + " twice: two outputs name the same file");
+  }
+  std::vector<std::unique_ptr<AtomicOutput>> outs;
+  for (const FileContent& f : files) {
+    outs.push_back(std::make_unique<AtomicOutput>(f.path));
+    writeTemporary(*outs.back(), f.path, f.content);
+  }
+  for (auto& out : outs) out->commit();
 }
 
 void ensureDirectory(const std::filesystem::path& dir) {
@@ -54,7 +81,8 @@ void ensureDirectory(const std::filesystem::path& dir) {
 
 std::string readWholeFile(const std::filesystem::path& path) {
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw IoError(path.string() + " does not exist");
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw IoError(path.string() + (std::filesystem::exists(path, ec) ? " is not a regular file" : " does not exist"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError("cannot open " + path.string());
   std::ostringstream ss;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace voxref::io {
 
@@ -42,7 +43,17 @@ class AtomicOutput {
 // Throws IoError naming the path (directory missing, disk full, permission).
 void writeFileAtomically(const std::filesystem::path& path, std::string_view content);
 
-// The whole content of a regular file; throws IoError "<path> does not exist" or "cannot open".
+// Several files that belong together (a stream and its side file): every one is written to its
+// temporary first, and they are renamed onto their destinations only when all are complete, so a
+// failure leaves none of them (and every earlier file at those paths as it was). Throws IoError.
+struct FileContent {
+  std::filesystem::path path;
+  std::string_view content;
+};
+void writeFilesAtomically(const std::vector<FileContent>& files);
+
+// The whole content of a regular file; throws IoError "<path> does not exist", "<path> is not a
+// regular file" or "cannot open". Memory: the file's size (the caller's parser bounds the rest).
 std::string readWholeFile(const std::filesystem::path& path);
 
 // Creates the directory (and parents); throws IoError naming it.

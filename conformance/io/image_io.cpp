@@ -5,6 +5,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include "conformance/io/atomic_file.h"
@@ -14,14 +15,17 @@ namespace voxref::io {
 void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
   if (image.rgb.size() != static_cast<std::size_t>(image.width) * image.height * 3)
     throw IoError("image for " + path.string() + " has the wrong number of pixels");
-  AtomicOutput out(path);
-  auto file = OIIO::ImageOutput::create(out.temporary().string());
-  if (!file) throw IoError("cannot write " + path.string() + ": " + OIIO::geterror());
+  // OIIO's PNG writer does not report a failing write (a full disk gave a truncated PNG that it
+  // called written): encode into memory, then write the bytes with checked writes, atomically.
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput memory(bytes);
+  auto file = OIIO::ImageOutput::create("png");
+  if (!file || !file->supports("ioproxy")) throw IoError("cannot write " + path.string() + ": OpenImageIO has no PNG writer to memory " + OIIO::geterror());
   const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  if (!file->open(out.temporary().string(), spec) || !file->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) ||
+  if (!file->set_ioproxy(&memory) || !file->open(path.string(), spec) || !file->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) ||
       !file->close())
-    throw IoError("cannot write " + path.string() + ": " + file->geterror());
-  out.commit();
+    throw IoError("cannot encode " + path.string() + ": " + file->geterror());
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 void writeExr(const std::filesystem::path& path, int width, int height, const std::vector<ExrChannel>& channels,

@@ -15,9 +15,16 @@ enum class VoxelType { UInt8, UInt16 };
 std::optional<VoxelType> parseVoxelType(std::string_view s);
 
 // Reads exactly X*Y*Z voxels of `type` (uint16 little endian). Throws IoError naming the file
-// when it is missing, unreadable, not valid gzip, or holds a different number of bytes than the
-// dimensions need (the message gives both counts). The size is checked against the file (or the
-// gzip stream) before the volume is allocated beyond that size. Safe on untrusted input.
+// when it is missing, not a regular file, unreadable, not valid gzip, a truncated gzip stream,
+// holds a different number of bytes than the dimensions need (the message gives both counts), or
+// when the dimensions are not positive or exceed 2^40 voxels. The size is checked against the file
+// (or the gzip stream) before the volume is allocated beyond that size. Safe on untrusted input.
+//
+// Memory: the read buffer, at most the dimensions' size plus one byte and at most twice what has
+// been read so far (64 KiB to start, growing by at most 16 MiB at a time), plus the returned
+// volume once the size has matched. Reading stops one byte past the size the dimensions need, so
+// dimensions of 65535^3 over a small file, or a gzip that would expand beyond the dimensions, are
+// refused after allocating at most 64 KiB or twice the data actually there, never the claimed size.
 ref::Volume<std::uint8_t> readRawVolumeU8(const std::filesystem::path& path, const ref::Dims3& dims);
 ref::Volume<std::uint16_t> readRawVolumeU16(const std::filesystem::path& path, const ref::Dims3& dims);
 

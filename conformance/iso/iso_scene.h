@@ -8,11 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "conformance/json_reader.h"
 #include "reference/common/view_camera.h"
 #include "reference/common/volume.h"
 #include <nlohmann/json.hpp>
 
 #include "reference/iso/view_refinement.h"
+#include "reference/leb/leb_grid.h"
 
 namespace voxref::conf {
 
@@ -43,11 +45,17 @@ struct IsoScene {
 void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 
 // The scene as JSON and back (fixture manifests). fromJson throws nlohmann::json exceptions that
-// name the missing or mistyped key.
+// name a missing key, and JsonFieldError naming the field for a value of the wrong type, an integer
+// out of range (dims 1..kMaxIsoSceneExtent, the largest LEB grid; orbit frames
+// 1..kMaxIsoSceneFrames; camera width and height 1..kMaxIsoSceneImageSide; refinement budgets
+// >= 0), a data name that is no field, or an orbit camera that is degenerate at some frame.
+inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxLebK) + 1, kMaxIsoSceneFrames = 10000, kMaxIsoSceneImageSide = 4096;
 nlohmann::json toJson(const IsoScene& scene);
 IsoScene isoSceneFromJson(const nlohmann::json& j);
 
-// The volume of the scene (deterministic). Throws io::IoError for a missing or short volume file.
+// The volume of the scene (deterministic). Throws io::IoError for a missing or short volume file,
+// std::invalid_argument for data it cannot build: an unknown field, a single_voxel volume below
+// 3x4x7 (the voxel would be outside), a plateau at an isovalue outside 0..65535.
 ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene);
 
 std::vector<IsoScene> builtInIsoScenes();

@@ -9,7 +9,7 @@
 namespace voxref::conf {
 
 void writeReportFiles(const std::filesystem::path& outDir, const RunInfo& run, const std::vector<CaseResult>& results) {
-  io::writeFileAtomically(outDir / "results.json", resultsJson(run, results).dump(2) + "\n");
+  io::writeFileAtomically(outDir / "results.json", resultsText(run, results));
   io::writeFileAtomically(outDir / "junit.xml", junitXml(results));
   writeHtmlReport(outDir, run, results);
 }

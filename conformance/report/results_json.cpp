@@ -64,4 +64,8 @@ nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& re
           {"cases", cases}};
 }
 
+std::string resultsText(const RunInfo& run, const std::vector<CaseResult>& results) {
+  return resultsJson(run, results).dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
 }  // namespace voxref::conf

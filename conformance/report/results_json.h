@@ -26,5 +26,9 @@ struct RunInfo {
 
 nlohmann::json caseJson(const CaseResult& r);
 nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& results);
+// results.json as written: resultsJson indented by 2, with a final newline. Bytes that are not
+// UTF-8 (a crashed case's output cut at an arbitrary byte, a driver's message) become U+FFFD
+// instead of making the report unwritable.
+std::string resultsText(const RunInfo& run, const std::vector<CaseResult>& results);
 
 }  // namespace voxref::conf

@@ -1,6 +1,7 @@
 #include "conformance/report/results_reader.h"
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "conformance/io/atomic_file.h"
@@ -26,11 +27,22 @@ std::string optionalText(const nlohmann::json& j, const char* key) {
   return it != j.end() && it->is_string() ? it->get<std::string>() : std::string();
 }
 
-double number(const nlohmann::json& j, const char* key, const std::string& where) {
-  const nlohmann::json& v = field(j, key, where);
+double numberValue(const nlohmann::json& v, const std::string& what) {
   if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();  // written for NaN
-  if (!v.is_number()) throw ResultsFormatError(where + "." + key + ": expected a number");
+  if (!v.is_number()) throw ResultsFormatError(what + ": expected a number");
   return v.get<double>();
+}
+
+double number(const nlohmann::json& j, const char* key, const std::string& where) { return numberValue(field(j, key, where), where + "." + key); }
+
+// An int, checked before it is converted (a NaN or 1e300 converted into an int is undefined).
+int integer(const nlohmann::json& j, const char* key, const std::string& where) {
+  const nlohmann::json& v = field(j, key, where);
+  const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                                           : v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                                                 v.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  if (!fits) throw ResultsFormatError(where + "." + key + ": expected an integer (an int), got " + v.dump());
+  return static_cast<int>(v.get<std::int64_t>());
 }
 
 }  // namespace
@@ -74,15 +86,15 @@ CaseResult caseFromJson(const nlohmann::json& j) {
     for (const auto& w : *it) {
       const std::string at = where + ".worst_pixels";
       PixelValues p;
-      p.x = static_cast<int>(number(w, "x", at));
-      p.y = static_cast<int>(number(w, "y", at));
-      p.k = static_cast<int>(number(w, "k", at));
+      p.x = integer(w, "x", at);
+      p.y = integer(w, "y", at);
+      p.k = integer(w, "k", at);
       p.oracle = text(w, "oracle", at);
       p.gl = number(w, "gl", at);
       p.emulated = number(w, "emulated", at);
       p.reference = number(w, "reference", at);
       if (const auto a = w.find("allowed"); a != w.end() && a->is_array() && a->size() == 2)
-        p.allowed = std::make_pair((*a)[0].get<double>(), (*a)[1].get<double>());
+        p.allowed = std::make_pair(numberValue((*a)[0], at + ".allowed"), numberValue((*a)[1], at + ".allowed"));
       r.worstPixels.push_back(p);
     }
   return r;
@@ -95,24 +107,33 @@ LoadedResults loadResults(const std::filesystem::path& file) {
   } catch (const std::exception& e) {
     throw ResultsFormatError(e.what());
   }
+  return parseResults(bytes, file.string());
+}
+
+LoadedResults parseResults(std::string_view bytes, const std::string& where) {
   LoadedResults out;
   try {
     out.document = nlohmann::json::parse(bytes);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw ResultsFormatError(file.string() + ": not JSON: " + e.what());
+  } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range for a number beyond double
+    throw ResultsFormatError(where + ": not JSON: " + e.what());
   }
-  const std::string where = file.string();
-  if (!out.document.is_object() || out.document.value("format", "") != "voxref-results")
+  // Compared as JSON values: value("format", "") would throw type_error for a format of another type.
+  const nlohmann::json& doc = out.document;
+  if (!doc.is_object() || !doc.contains("format") || doc["format"] != "voxref-results")
     throw ResultsFormatError(where + ": not a voxref results file (\"format\" is not \"voxref-results\")");
-  if (out.document.value("format_version", 0) != 1)
-    throw ResultsFormatError(where + ": results format version " + out.document.value("format_version", nlohmann::json()).dump() +
+  if (!doc.contains("format_version") || doc["format_version"] != 1)
+    throw ResultsFormatError(where + ": results format version " + (doc.contains("format_version") ? doc["format_version"].dump() : "(none)") +
                              " (this voxref reads version 1)");
   const nlohmann::json& cases = field(out.document, "cases", where);
   if (!cases.is_array()) throw ResultsFormatError(where + ".cases: expected an array");
-  try {
-    for (const auto& c : cases) out.cases.push_back(caseFromJson(c));
-  } catch (const nlohmann::json::exception& e) {
-    throw ResultsFormatError(where + ": " + e.what());
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    try {
+      out.cases.push_back(caseFromJson(cases[i]));
+    } catch (const nlohmann::json::exception& e) {
+      throw ResultsFormatError(where + ": cases[" + std::to_string(i) + "]: " + e.what());
+    } catch (const ResultsFormatError& e) {  // caseFromJson names the case and the field; this names the file
+      throw ResultsFormatError(where + ": cases[" + std::to_string(i) + "]: " + e.what());
+    }
   }
   return out;
 }

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <stdexcept>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -30,5 +32,8 @@ struct LoadedResults {
 // Throws ResultsFormatError for a missing or unreadable file, bad JSON, or a document whose
 // "format" is not "voxref-results" version 1.
 LoadedResults loadResults(const std::filesystem::path& file);
+// The same from the file's bytes (loadResults reads the file and calls this); `sourceName` names
+// the file in the errors. Throws ResultsFormatError only.
+LoadedResults parseResults(std::string_view bytes, const std::string& sourceName);
 
 }  // namespace voxref::conf

@@ -41,7 +41,10 @@ DiamondBounds computeDiamondBounds(const LebGrid& grid, const std::vector<std::u
 
 // The bounds as bytes stored beside a compressed stream (reference/iso/BOUNDS_FORMAT.md), and back.
 // parseDiamondBounds checks the magic, version, grid, exact size, CRC-32 and min <= max, and
-// throws StreamError naming the offset and field of the first problem.
+// throws StreamError naming the offset and field of the first problem. Memory: 8 bytes per grid
+// point, as many as the bytes it is given (12 + 8 n), allocated only after the size the header's k
+// implies has been checked against their length: a k = 10 header (8.6 GB of bounds) on a short
+// file is refused before anything is allocated.
 std::string serializeDiamondBounds(const DiamondBounds& bounds);
 DiamondBounds parseDiamondBounds(std::string_view bytes);
 

@@ -151,6 +151,17 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
   return serializeLebStream(volume.dims(), sampleBits, grid, o.pageBits, channels);
 }
 
+std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
+  const auto samples = static_cast<std::uint64_t>(s.dims[0]) * static_cast<std::uint64_t>(s.dims[1]) * static_cast<std::uint64_t>(s.dims[2]);
+  const auto bricks = static_cast<std::uint64_t>((s.grid.pointsPerAxis() + 7) / 8);
+  std::uint64_t bytes = 2 * samples, grid = 0;
+  for (const LebChannel& c : s.channels) {
+    if (c.kind == LebChannelKind::Gradients) bytes += 3 * samples;
+    grid = std::max(grid, bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(c.components) * 2);  // GridValues
+  }
+  return bytes + grid;
+}
+
 LebDecoded decodeLeb(const LebStream& s, int threads) {
   const HzOrder order(s.grid);
   LebDecoded out;

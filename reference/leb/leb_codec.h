@@ -39,11 +39,16 @@ struct LebDecoded {
 };
 // Decodes every page (checking its CRC-32 and its code) and reconstructs the volume. Throws
 // StreamError naming the page and offset of the first corrupt page.
-// Memory: the volume and its gradients, plus the grid's values of one channel at a time,
-// (2^k + 1)^3 x components x 2 bytes (rounded up to 8^3 bricks): 35 MB for a 257^3 data channel,
-// 2.2 GB for 1025^3. The grid is the smallest cube that covers the volume, so a thin volume pays
-// for the whole cube; parseLebStream has already refused streams too short for their volume.
+// Memory: at most lebDecodeMemoryBytes(stream), plus one small reader per open page: the volume
+// (2 bytes per sample) and its gradients (3 bytes per sample), plus the grid's values of one
+// channel at a time, (2^k + 1)^3 x components x 2 bytes (rounded up to 8^3 bricks): 35 MB for a
+// 257^3 data channel, 2.2 GB for 1025^3. The grid is the smallest cube that covers the volume, so
+// a thin volume pays for the whole cube (a 3 KB stream of 513x1x1 samples needs 1.1 GB): a caller
+// that decodes untrusted streams compares lebDecodeMemoryBytes with what it may allocate first
+// (voxref decode does). parseLebStream has already refused streams too short for their volume.
 LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
+// The bound above, from the header alone (nothing is allocated).
+std::uint64_t lebDecodeMemoryBytes(const LebStream& stream);
 
 // The deltas the encoder codes for one channel, in stream order (points inside the volume only):
 // what the benchmarks hand to a general-purpose coder to separate the predictor from the coder.

@@ -7,7 +7,11 @@
 // endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels). Values of
 // one query are memoised, so a point is reconstructed once per query. Bit-identical to decodeLeb.
 //
-// Memory: the page cache's budget, plus the memo of one query. Errors: StreamError for a corrupt
+// Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
+// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo of one query (an
+// entry per point its reconstruction touches: the points asked for and their coarser split-edge
+// ancestors), plus reconstructPage's result, 2^pageBits x components x 4 bytes (at most 12 MiB).
+// Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
 // page (when it is decoded), std::invalid_argument for a point outside the grid or a channel the
 // stream lacks. Not thread-safe: use one reader per thread (they can share the stream).
 #pragma once

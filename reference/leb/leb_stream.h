@@ -5,7 +5,12 @@
 // CRC-32s, the code tables (prefix-free, lengths within the limit) and that the page table fits
 // the stream, before it keeps anything; the page payloads are checked (CRC-32, then the lead-1
 // decoder) when a page is decoded. Errors are StreamError (byte_stream.h) naming the offset and
-// the field. Memory: the parsed stream keeps the bytes plus 12 bytes per page.
+// the field. Memory: the parsed stream keeps the bytes, plus 12 bytes per page and channel (the
+// page table, whose 8 bytes per page are checked to lie in the stream before it is allocated:
+// at most 1.5 times the stream's size) and the code's decoding tables (a few KiB). Claimed sizes
+// (total_bytes, payload_bytes, a page table of 2^40 bytes) are checked against the stream's length
+// before anything is allocated for them; what decoding the volume costs is lebDecodeMemoryBytes
+// (leb_codec.h).
 #pragma once
 
 #include <cstdint>

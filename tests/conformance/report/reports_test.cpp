@@ -44,5 +44,13 @@ TEST(JunitXml, FailuresSkipsAndEscaping) {
   EXPECT_EQ(xmlEscape("<a & 'b'>"), "&lt;a &amp; &apos;b&apos;&gt;");
 }
 
+TEST(ResultsText, BytesThatAreNotUtf8DoNotStopTheReport) {
+  CaseResult r = sample(Status::Crash);
+  r.stderrText = std::string("cut in the middle of \xc3");  // a UTF-8 sequence cut short
+  const std::string text = resultsText(RunInfo{}, {r});
+  const nlohmann::json back = nlohmann::json::parse(text);
+  EXPECT_EQ(back["cases"][0]["stderr"].get<std::string>(), "cut in the middle of \xef\xbf\xbd");
+}
+
 }  // namespace
 }  // namespace voxref::conf

@@ -73,5 +73,35 @@ TEST(ResultsReader, RejectsWhatIsNotAResultsFile) {
   std::filesystem::remove_all(dir);
 }
 
+// Found by tests/fuzz/results_json_fuzz.cpp (tests/fuzz/regressions/results_json): each once let
+// an nlohmann exception escape or converted a non-integer into an int (undefined behaviour).
+TEST(ResultsReader, FuzzRegressions) {
+  auto error = [](const std::string& text) -> std::string {
+    try {
+      (void)parseResults(text, "r.json");
+    } catch (const ResultsFormatError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // number_overflow_escapes_parse: nlohmann throws out_of_range (not parse_error) for 1e999.
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e999})").find("r.json: not JSON"), std::string::npos);
+  // format_not_a_string_escapes: value("format", "") threw type_error for an object.
+  EXPECT_NE(error(R"({"format": {}})").find("not a voxref results file"), std::string::npos);
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": "1"})").find("results format version \"1\""), std::string::npos);
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e300})").find("results format version"), std::string::npos);
+  // worst_pixel_null_coordinate_to_int: a null (NaN) or 1e300 pixel coordinate was cast to int.
+  nlohmann::json c = caseJson(everyField());
+  for (const nlohmann::json& bad : {nlohmann::json(nullptr), nlohmann::json(1e300), nlohmann::json(2.5), nlohmann::json(4294967296LL)}) {
+    nlohmann::json w = c;
+    w["worst_pixels"][0]["x"] = bad;
+    EXPECT_THROW((void)caseFromJson(w), ResultsFormatError) << bad.dump();
+  }
+  nlohmann::json a = c;
+  a["worst_pixels"][0]["allowed"] = {"low", 1};
+  EXPECT_THROW((void)caseFromJson(a), ResultsFormatError);  // was nlohmann's type_error
+  EXPECT_EQ(error(nlohmann::json{{"format", "voxref-results"}, {"format_version", 1}, {"cases", {c}}}.dump()), "");
+}
+
 }  // namespace
 }  // namespace voxref::conf

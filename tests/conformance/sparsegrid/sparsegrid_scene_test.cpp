@@ -45,6 +45,18 @@ TEST(SparseGridScene, ErrorsNameTheFieldAndWhatWasExpected) {
   EXPECT_EQ(errorOf(R"([1, 2])"), "the document: expected an object, got [1,2]");
 }
 
+// Found by tests/fuzz/scene_json_fuzz.cpp (tests/fuzz/regressions/scene_json/
+// sparsegrid_image_float_overflows_int): integers were converted by nlohmann without a check, a
+// float beyond int's range being undefined behaviour and 2^32 + 64 silently becoming 64.
+TEST(SparseGridScene, IntegersAreCheckedBeforeTheyAreConverted) {
+  EXPECT_EQ(errorOf(R"({"image": [-1e300, 5]})"), "image: expected an array of integers, got [-1e+300,5]");
+  EXPECT_EQ(errorOf(R"({"image": [48.5, 48]})"), "image: expected an array of integers, got [48.5,48]");
+  EXPECT_EQ(errorOf(R"({"pass_order": [1e300]})"), "pass_order: expected an array of integers, got [1e+300]");
+  EXPECT_EQ(errorOf(R"({"planes": 4294967360})"), "planes: expected an integer, got 4294967360");
+  EXPECT_EQ(errorOf(R"({"data": {"volume": "v.raw", "dims": [9, 9, -1e300]}})"), "data.dims: expected an array of integers, got [9,9,-1e+300]");
+  EXPECT_EQ(errorOf(R"({"planes": 64, "image": [64, 64]})"), "");
+}
+
 TEST(SparseGridScene, CameraMustBeFloat32Exact) {
   SparseGridScene s = defaultSparseGridScene();
   s.camera.origin = glm::dvec3(0.1);  // not on the 2^-22 lattice

@@ -142,5 +142,22 @@ TEST(DiamondBoundsFile, RoundTripsAndRefusesCorruption) {
   EXPECT_NE(error(flipped).find("crc32"), std::string::npos);
 }
 
+// The contract of diamond_bounds.h ("Memory: ..."): a header of k = 10 claims 8 bytes for each of
+// 1025^3 points, 8.6 GB; a file of 108 bytes is refused by its size before anything is allocated.
+TEST(DiamondBoundsFile, AHugeGridClaimIsRefusedBeforeAllocating) {
+  std::string bytes = "VXLD";
+  bytes += '\x01';
+  bytes += '\x00';
+  bytes += '\x0a';  // k = 10
+  bytes += '\x00';
+  bytes += std::string(100, '\0');
+  try {
+    parseDiamondBounds(bytes);
+    FAIL() << "no error";
+  } catch (const StreamError& e) {
+    EXPECT_EQ(std::string(e.what()), "offset 108: size: a grid of 1076890625 points needs 8615125012 bytes, the stream has 108");
+  }
+}
+
 }  // namespace
 }  // namespace voxref::ref

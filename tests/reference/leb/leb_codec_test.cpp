@@ -204,6 +204,50 @@ TEST_F(LebCorrupt, OversizedClaimsAreRefusedBeforeAllocating) {
   EXPECT_NE(e.find("page_count: expected"), std::string::npos) << e;
 }
 
+// The contract of leb_stream.h ("Memory: ..."): sizes a header claims are checked against the
+// stream's length before anything is allocated for them.
+TEST_F(LebCorrupt, HugeClaimedSizesAreRefusedBeforeAllocating) {
+  auto put64 = [](std::string& b, std::size_t at, std::uint64_t v) {
+    for (int i = 0; i < 8; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  const std::uint64_t terabyte = std::uint64_t{1} << 40;
+  // total_bytes of 2^40 (header CRC remade).
+  std::string b = bytes;
+  put64(b, 24, terabyte);
+  put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
+  EXPECT_EQ(errorOf(b), "offset 24: total_bytes: the header describes 1099511627776 bytes, the stream has " + std::to_string(b.size()) + " (truncated)");
+  // payload_bytes of 2^40 in the data channel's descriptor (offset 36 + 8).
+  b = bytes;
+  put64(b, 44, terabyte);
+  EXPECT_EQ(errorOf(b), "offset 44: payload_bytes: 1099511627776, but the pages add up to " + std::to_string(layout.channels[0].payloadBytes()));
+  // The largest grid, 1025^3, in pages of 2^4: 67305665 pages, a page table of 8 bytes each (and
+  // the descriptor CRC) that the stream cannot hold; the table starts after the 9 x 9 code lengths.
+  b = bytes;
+  b[7] = 10;
+  put32(b, 8, 1025);
+  put32(b, 12, 1025);
+  put32(b, 16, 1025);
+  b[20] = 4;
+  put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
+  put32(b, 40, 67305665);
+  EXPECT_EQ(errorOf(b), "offset 133: page table: expected 538445324 bytes, the stream ends after " + std::to_string(b.size() - 133));
+}
+
+// The contract of leb_codec.h: what decodeLeb allocates is known from the header. A thin volume
+// pays for the cube that covers it: 65x1x1 samples in a stream of a few KB need the 65^3 grid
+// (9^3 bricks of 8^3 points), 2.2 MB for the 3 gradient components.
+TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheGrid) {
+  const LebStream thin = parseLebStream(encodeLeb(noise({65, 1, 1}, 8, 3), 8));
+  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + 9u * 9 * 9 * 512 * 3 * 2);
+  EXPECT_GT(lebDecodeMemoryBytes(thin), 100 * thin.bytes.size());
+  LebEncodeOptions o;
+  o.gradients = false;
+  const LebStream cube = parseLebStream(encodeLeb(noise({9, 9, 9}, 16, 4), 16, o));
+  EXPECT_EQ(lebDecodeMemoryBytes(cube), 2u * 729 + 2u * 2 * 2 * 512 * 1 * 2);
+  const LebDecoded d = decodeLeb(thin);  // and the bound is what the decoder works within
+  EXPECT_EQ(d.data.data().size(), 65u);
+}
+
 TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {
   // A 5x1x1 constant volume (grid 5^3) whose header then claims 5x5x5: 125 deltas cannot fit in
   // the few bytes of payload, whatever the code.

@@ -88,6 +88,30 @@ TEST(TimeVaryingContainer, HugeClaimedSizesAreRefusedBeforeAllocating) {
   EXPECT_NE(e.find("(truncated)"), std::string::npos) << e;
 }
 
+// The contract of container.h ("Memory: ..."): a header whose every field agrees with the others
+// (side 512, 65536 steps, level 7: 128^3 cells of 4^3 voxels, 64^3 index slots, 4096^3 block slots,
+// every cell homogeneous) claims 2.2 TB of index and 17.6 TB of refinement texture; the 10 KB file
+// is refused at the first texture, by its length, before anything is allocated for them.
+TEST(TimeVaryingContainer, AHeaderWhoseFieldsAgreeClaimingTerabytesIsRefusedByTheFileLength) {
+  std::string b = serializeTimeVarying(sampleFile());
+  auto put = [&b](std::size_t at, std::uint64_t v, std::size_t width) {
+    for (std::size_t i = 0; i < width; ++i) b[at + i] = static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  put(8, 512, 4);
+  put(12, 65536, 4);
+  put(16, 7, 4);
+  put(20, 128, 4);
+  put(24, 4, 4);
+  put(28, 64, 4);
+  put(32, 4096, 4);
+  put(56, std::uint64_t{65536} * 128 * 128 * 128, 8);
+  put(64, 0, 8);
+  const std::size_t texturesAt = 96 + 1 + 5 + 1024;  // the header, the transfer function "plume" and its table
+  const std::uint64_t claimed = texturesAt + std::uint64_t{8192} * 8192 * 8192 * 4 + std::uint64_t{16384} * 16384 * 16384 * 4 + 4;
+  EXPECT_EQ(errorOf(b), "test.vxtv: offset " + std::to_string(texturesAt) + ": the header describes " + std::to_string(claimed) +
+                            " bytes in all, the file has " + std::to_string(b.size()) + " (truncated)");
+}
+
 TEST(TimeVaryingContainer, AnAddressOutsideTheStoredBlocksIsRejected) {
   const TimeVaryingFile f = sampleFile();
   std::string b = serializeTimeVarying(f);
