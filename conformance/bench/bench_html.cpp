@@ -24,8 +24,7 @@ std::string plotHtml(const PlottedFigure& f, const std::string& dir) {
   const std::string base = dir + "/";
   std::string h = "<figure class=\"bench-plot\" id=\"plot-" + htmlEscape(f.plot.id) + "\"><img src=\"" + htmlEscape(base + f.files.svg.filename().string()) +
                   "\" alt=\"" + htmlEscape(f.plot.title) + "\" width=\"1000\" height=\"650\"><figcaption>" + htmlEscape(f.plot.title) + ". ";
-  if (!f.files.costSummary.empty())
-    h += htmlEscape(std::string(f.plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") + f.files.costSummary + ". ");
+  if (const std::string cost = costSentence(f.plot, f.files); !cost.empty()) h += htmlEscape(cost) + " ";
   if (!f.plot.note.empty()) h += htmlEscape(f.plot.note) + " ";
   h += "<a href=\"" + htmlEscape(base + f.files.png.filename().string()) + "\">PNG</a>, <a href=\"" +
        htmlEscape(base + f.files.svg.filename().string()) + "\">SVG</a>, <a href=\"" + htmlEscape(base + f.files.script.filename().string()) +

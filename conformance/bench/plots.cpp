@@ -179,6 +179,11 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
   return f;
 }
 
+std::string costSentence(const AccuracyPlot& plot, const PlotFiles& files) {
+  if (files.costSummary.empty()) return {};
+  return std::string(plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") + files.costSummary + ".";
+}
+
 std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const std::string& rel) {
   std::string md = "### " + plot.title + "\n\n![" + plot.title + "](" + rel + "/" + files.png.filename().string() + ")\n\n[SVG](" + rel + "/" +
                    files.svg.filename().string() + "), [gnuplot script](" + rel + "/" + files.script.filename().string() + "), [data](" + rel +
@@ -186,7 +191,7 @@ std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const
   std::vector<std::string> front;
   for (std::size_t i : files.front) front.push_back(plot.labels[i]);
   if (!files.costSummary.empty())
-    md += std::string(plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") + files.costSummary + ". Pareto front, fastest first: " + joined(front) + ".";
+    md += costSentence(plot, files) + " Pareto front, fastest first: " + joined(front) + ".";
   else
     md += "No variant could be plotted.";
   if (!plot.note.empty()) md += " " + plot.note;

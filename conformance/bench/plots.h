@@ -52,6 +52,10 @@ struct PlotFiles {
 // gnuplot is missing or fails, io::IoError when a file cannot be written.
 PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::path& dir);
 
+// "What each extra bit costs: <files.costSummary>." ("What each byte saved costs: ..." for a
+// memory plot); empty when the front is empty. The markdown and the bench's page both say it.
+std::string costSentence(const AccuracyPlot& plot, const PlotFiles& files);
+
 // The markdown of one plot: the image link (relative to the folder of bench.md, where `dir` is
 // `relativeDir`), links to the SVG, script and data, and the "what each extra bit costs" line.
 std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const std::string& relativeDir);
