@@ -46,4 +46,15 @@ Status statusFromOracles(const std::vector<OracleResult>& oracles) {
   return s;
 }
 
+void concludeFromOracles(CaseResult& result) {
+  result.status = statusFromOracles(result.oracles);
+  result.message.clear();
+  for (const Verdict wanted : {Verdict::Fail, Verdict::Warn})
+    for (const OracleResult& o : result.oracles)
+      if (result.message.empty() && o.verdict == wanted) {
+        const std::string summary = o.summary.empty() ? "(no summary)" : o.summary;
+        result.message = o.oracle + ": " + summary.substr(0, summary.find('\n'));
+      }
+}
+
 }  // namespace voxref::conf

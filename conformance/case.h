@@ -66,14 +66,23 @@ struct CaseResult {
   std::vector<OracleResult> oracles;
   std::vector<std::string> effects;  // emulation/effects.h ids the emulator simulated
   std::vector<Finding> findings;
-  nlohmann::json figures = nlohmann::json::object();  // the case's own numbers (grids, passes ...)
+  nlohmann::json figures = nlohmann::json::object();  // the case's own numbers (grids, passes ...): deterministic, compared between runs
   double secondsGl = 0.0, secondsEmulation = 0.0, secondsReference = 0.0;
+  // Other wall-clock times the case measured (seconds): kept apart from the figures, which must be
+  // equal bit for bit between equal runs; never compared between runs.
+  nlohmann::json timings = nlohmann::json::object();
   CaseImages images;
   std::vector<PixelValues> worstPixels;
 };
 
 // Fail if any oracle failed, else warn if any warned, else pass; NotRun and Info do not count.
 Status statusFromOracles(const std::vector<OracleResult>& oracles);
+
+// Every judge ends with this: sets result.status from its oracles (statusFromOracles) and
+// result.message to the one-line reason of a case that is not a pass, "<oracle>: <summary>" of the
+// first oracle that failed, else of the first that warned; empty for a pass. A case that is not a
+// pass always states its reason in one line (results.json, junit.xml, the terminal, index.html).
+void concludeFromOracles(CaseResult& result);
 
 struct Case {
   std::string id;

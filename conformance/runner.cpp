@@ -166,9 +166,15 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
                                            : nlohmann::json(nullptr)}};
   out << "voxref conform: " << cases.size() << " case(s)";
   if (options.shard) out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selected << ")";
-  out << " on " << identity.renderer << " (" << identity.version << "), profile "
+  out << " on " << identity.renderer << " (" << identity.version << ") through " << identity.driver.value("api", std::string("?")) << ", profile "
       << (identity.profileName.empty() ? std::string("none: envelope oracle alone") : identity.profileName) << ", "
       << (options.inProcess ? std::string("in this process") : std::to_string(options.jobs) + " process(es) at once") << std::endl;
+  // What a rerun must set to get the same driver (gpu::environmentPins; all of it is in results.json).
+  std::string set;
+  const nlohmann::json environment = identity.driver.value("environment", nlohmann::json::object());
+  for (const auto& [k, v] : environment.items())
+    if (v.is_string() && v != "(unset)") set += " " + k + "=" + v.get<std::string>();
+  if (!set.empty()) out << "environment:" << set << std::endl;
 
   std::vector<std::optional<CaseResult>> slots(cases.size());
   Progress progress("voxref conform", static_cast<long>(cases.size()));

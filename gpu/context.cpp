@@ -1,5 +1,8 @@
 #include "gpu/context.h"
 
+#include <unistd.h>
+
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -30,11 +33,32 @@ std::unique_ptr<Context> createContext(Driver driver) {
 
 std::vector<std::pair<std::string, std::string>> environmentPins() {
   std::vector<std::pair<std::string, std::string>> pins;
-  for (const char* var : {"GALLIUM_DRIVER", "GALLIVM_PERF", "LP_NATIVE_VECTOR_WIDTH", "LP_PERF", "GALLIUM_OVERRIDE_CPU_CAPS",
-                          "EGL_PLATFORM"}) {
+  static constexpr const char* kAlways[] = {"GALLIUM_DRIVER", "GALLIVM_PERF", "LP_NATIVE_VECTOR_WIDTH", "LP_PERF", "GALLIUM_OVERRIDE_CPU_CAPS",
+                                            "EGL_PLATFORM"};
+  for (const char* var : kAlways) {
     const char* v = std::getenv(var);
     pins.emplace_back(var, v ? v : "(unset)");
   }
+  // Every other variable that is set and can change which driver, loader, ICD or code path runs:
+  // Mesa's and the GL and EGL loaders' (MESA_LOADER_DRIVER_OVERRIDE, LIBGL_ALWAYS_SOFTWARE,
+  // MESA_GL_VERSION_OVERRIDE, __EGL_VENDOR_LIBRARY_FILENAMES ...), the Vulkan loader's for zink
+  // (VK_ICD_FILENAMES, VK_DRIVER_FILES ...), the drivers' own debug settings, the dynamic linker's.
+  static constexpr const char* kPrefixes[] = {"MESA_", "LIBGL_", "GALLIUM_", "GALLIVM_", "LP_", "SOFTPIPE_", "ZINK_", "LVP_", "NIR_", "GLSL_",
+                                              "VK_", "EGL_", "__EGL_", "__GLX_", "__GL_", "DRI_", "RADV_", "AMD_", "ANV_", "INTEL_", "NV_",
+                                              "NOUVEAU_", "LD_LIBRARY_PATH", "LD_PRELOAD", "DISPLAY", "WAYLAND_DISPLAY"};
+  std::vector<std::pair<std::string, std::string>> more;
+  for (char** e = environ; e && *e; ++e) {
+    const std::string entry(*e);
+    const std::size_t eq = entry.find('=');
+    if (eq == std::string::npos) continue;
+    const std::string key = entry.substr(0, eq);
+    bool relevant = false;
+    for (const char* p : kPrefixes) relevant = relevant || key.rfind(p, 0) == 0;
+    for (const char* a : kAlways) relevant = relevant && key != a;
+    if (relevant) more.emplace_back(key, entry.substr(eq + 1));
+  }
+  std::sort(more.begin(), more.end());
+  pins.insert(pins.end(), more.begin(), more.end());
   return pins;
 }
 

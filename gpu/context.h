@@ -49,9 +49,13 @@ class Context {
 // the highest of 4.5 / 3.3 core for EGL.
 std::unique_ptr<Context> createContext(Driver driver);
 
-// Environment variables that change what Mesa computes (PRECISION.md), with their values or
-// "(unset)": GALLIUM_DRIVER, GALLIVM_PERF, LP_NATIVE_VECTOR_WIDTH, LP_PERF,
-// GALLIUM_OVERRIDE_CPU_CAPS, EGL_PLATFORM.
+// Environment variables that change which driver runs or what it computes (docs/precision.md),
+// so that a report says how to reproduce its run: GALLIUM_DRIVER, GALLIVM_PERF,
+// LP_NATIVE_VECTOR_WIDTH, LP_PERF, GALLIUM_OVERRIDE_CPU_CAPS and EGL_PLATFORM always (value or
+// "(unset)"), then, sorted, every other set variable of Mesa, the GL, EGL and Vulkan loaders and
+// the drivers (prefixes MESA_, LIBGL_, GALLIUM_, GALLIVM_, LP_, SOFTPIPE_, ZINK_, LVP_, NIR_,
+// GLSL_, VK_, EGL_, __EGL_, __GLX_, __GL_, DRI_, RADV_, AMD_, ANV_, INTEL_, NV_, NOUVEAU_), and
+// LD_LIBRARY_PATH, LD_PRELOAD, DISPLAY, WAYLAND_DISPLAY.
 std::vector<std::pair<std::string, std::string>> environmentPins();
 
 }  // namespace voxref::gpu

@@ -83,9 +83,9 @@ glm::mat4 mvpOf(const ref::ViewCamera& camera) { return glm::mat4(ref::projectio
 // The mesh in vertex buffers, drawn with the shading program (colour writes as the caller set).
 class MeshDraw {
  public:
-  MeshDraw(Context& context, const ref::IsoMesh& mesh)
+  MeshDraw(Context& context, const ref::IsoMesh& mesh, std::string_view fragmentSource = shaders::kIsoMeshFrag)
       : gl_(&context.gl()),
-        program_(context.gl(), context.info().glslNumber, shaders::kIsoMeshVert, shaders::kIsoMeshFrag, "iso_mesh.frag"),
+        program_(context.gl(), context.info().glslNumber, shaders::kIsoMeshVert, fragmentSource, "iso_mesh.frag"),
         vao_(context.gl()),
         count_(static_cast<GLsizei>(mesh.indices.size())) {
     vao_.bind();
@@ -154,6 +154,45 @@ IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref
   MeshDraw(context, mesh).draw(camera);
   IsoImageGl out;
   target.read(out);
+  return out;
+}
+
+PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {
+  ref::ViewCamera camera;
+  camera.eye = {0.0, 0.0, 3.0};
+  camera.target = {0.0, 0.0, 0.0};
+  camera.up = {0.0, 1.0, 0.0};
+  camera.fovYDegrees = 90.0;
+  camera.width = camera.height = 16;
+  camera.nearPlane = 0.5;
+  camera.farPlane = 10.0;
+  ref::IsoMesh triangle;  // far larger than the view: it covers every pixel
+  triangle.positions = {{-100.0f, -100.0f, 0.0f}, {100.0f, -100.0f, 0.0f}, {0.0f, 100.0f, 0.0f}};
+  triangle.normals.assign(3, glm::vec3(0.0f, 0.0f, 1.0f));
+  triangle.indices = {0, 1, 2};
+  // The control: the same program with the constant id of the first triangle.
+  std::string control(shaders::kIsoMeshFrag);
+  const std::string read = "uint(gl_PrimitiveID) + 1u";
+  const std::size_t at = control.find(read);
+  if (at == std::string::npos) throw GlError("iso_mesh.frag no longer writes uint(gl_PrimitiveID) + 1u: the primitive-id check needs updating");
+  control.replace(at, read.size(), "1u");
+  PrimitiveIdCheck out;
+  auto draw = [&](std::string_view fragment, std::size_t& drawn, std::size_t* right) {
+    const GlApi& gl = context.gl();
+    IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
+    clearTarget(gl);
+    MeshDraw(context, triangle, fragment).draw(camera);
+    IsoImageGl image;
+    target.read(image);
+    out.pixels = image.windowDepth.size();
+    for (std::size_t i = 0; i < image.windowDepth.size(); ++i) {
+      const bool written = image.windowDepth[i] < 1.0f || image.rgba[i][3] != 0 || image.primitive[i] != 0;
+      drawn += written;
+      if (right && written && image.primitive[i] == 1) ++*right;
+    }
+  };
+  draw(shaders::kIsoMeshFrag, out.drawnWithId, &out.rightIds);
+  draw(control, out.drawnByControl, nullptr);
   return out;
 }
 

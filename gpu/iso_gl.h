@@ -27,6 +27,21 @@ struct IsoImageGl {
 // Renders the mesh. Throws GlUnsupported when the size exceeds GL_MAX_RENDERBUFFER_SIZE.
 IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref::ViewCamera& camera);
 
+// Whether fragments of the mesh program reach the framebuffer on this driver: one triangle that
+// covers a 16x16 target, drawn by the mesh program (which reads gl_PrimitiveID with no geometry
+// shader bound, as GL 4.6 section 15.2.2 and GLSL 1.50 allow) and by a control that differs only
+// in writing the constant id 1 instead. A conforming driver draws every pixel both times, with
+// id 1. softpipe (Mesa 22.3) draws nothing with the first, and raises no GL error
+// (docs/profiles.md).
+struct PrimitiveIdCheck {
+  std::size_t pixels = 0;            // of the target
+  std::size_t drawnWithId = 0;       // pixels the mesh program wrote
+  std::size_t rightIds = 0;          // of those, the ones whose id is 1 (the first triangle + 1)
+  std::size_t drawnByControl = 0;    // pixels the control program wrote
+  bool driverDropsPrimitiveIdDraws() const { return drawnByControl == pixels && drawnWithId < pixels; }
+};
+PrimitiveIdCheck checkPrimitiveIdGl(Context& context);
+
 struct QueryBox {
   std::array<double, 3> lo, hi;  // grid coordinates
 };

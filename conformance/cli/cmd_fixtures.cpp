@@ -14,7 +14,7 @@ std::vector<conf::IsoScene> requestedScenes(const FixturesOptions& o) {
   std::vector<conf::IsoScene> scenes;
   if (!o.volume.empty()) {
     if (o.dims.size() != 3) throw conf::UsageError("--volume needs --dims X Y Z");
-    if (!o.isovalueSet) throw conf::UsageError("--volume needs --isovalue");
+    if (!o.isovalue) throw conf::UsageError("--volume needs --isovalue");
     if (o.type != "uint8" && o.type != "uint16") throw conf::UsageError("--type must be uint8 or uint16, not " + o.type);
     conf::IsoScene s = conf::builtInIsoScenes().front();  // its camera and refinement settings
     s.name = o.volume.stem().string();
@@ -22,7 +22,7 @@ std::vector<conf::IsoScene> requestedScenes(const FixturesOptions& o) {
     s.volumeIsUint16 = o.type == "uint16";
     s.data.clear();
     conf::aimOrbitAt(s, {o.dims[0], o.dims[1], o.dims[2]});
-    s.isovalue = o.isovalue;
+    s.isovalue = *o.isovalue;
     scenes.push_back(s);
   } else {
     for (const conf::IsoScene& s : conf::builtInIsoScenes())
@@ -34,8 +34,8 @@ std::vector<conf::IsoScene> requestedScenes(const FixturesOptions& o) {
     }
   }
   for (conf::IsoScene& s : scenes) {
-    if (o.frames > 0) s.path.frames = o.frames;
-    if (o.isovalueSet) s.isovalue = o.isovalue;
+    if (o.frames) s.path.frames = *o.frames;
+    if (o.isovalue) s.isovalue = *o.isovalue;
   }
   return scenes;
 }

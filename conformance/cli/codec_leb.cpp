@@ -38,6 +38,13 @@ std::optional<std::uint64_t> addressSpaceLeft() {
   return cap > mapped ? cap - mapped : 0;
 }
 
+// Refuses a job whose memory need, known before anything is allocated, exceeds what this process
+// may still map (ulimit -v); `what` names the file and the need ("F: decoding needs N bytes (...)").
+void refuseBeyondAddressSpace(std::uint64_t need, const std::string& what) {
+  if (const std::optional<std::uint64_t> room = addressSpaceLeft(); room && need > *room)
+    throw io::IoError(what + ", more than the " + std::to_string(*room) + " bytes this process may still allocate (ulimit -v)");
+}
+
 std::string ratioText(double r) {
   char b[32];
   std::snprintf(b, sizeof b, "%.3f:1", r);
@@ -74,6 +81,28 @@ int encodeLebCommand(const EncodeOptions& o) {
   const auto type = io::parseVoxelType(o.type);
   if (!type) throw conf::UsageError("--type must be uint8 or uint16, got " + o.type);
   const ref::Dims3 dims{o.dims[0], o.dims[1], o.dims[2]};
+  ref::LebEncodeOptions options;
+  options.pageBits = o.pageBits;
+  options.gradients = !o.noGradients;
+  // What the encoder will allocate is known from the extents: a thin volume pays for the whole
+  // covering grid. Refused before the volume is read when the process may not allocate it.
+  (void)io::voxelsOf(o.inputs[0], dims);  // extents that are not positive or too many: named before any other check
+  std::uint64_t need = 0;
+  try {
+    need = ref::lebEncodeMemoryBytes(dims, options) + 2 * ref::sampleCount(dims);  // + the volume, widened to 16 bits
+  } catch (const std::invalid_argument& e) {
+    throw conf::UsageError(e.what());
+  }
+  const ref::LebGrid grid = ref::lebGridCovering(dims);
+  if (!o.boundsOut.empty()) {  // diamond_bounds.h: 8 bytes per grid point, beside a copy of the volume and its (zero) gradients
+    const auto n = static_cast<std::uint64_t>(grid.pointsPerAxis());
+    need += 16 * n * n * n + 5 * ref::sampleCount(dims);  // the bounds and their serialized copy
+  }
+  const std::string needText = o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (the " +
+                               std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) + " that covers " + dimsText(dims) +
+                               ", at 2 bytes per point and component, its deltas and the volume" +
+                               (o.boundsOut.empty() ? "" : ", and 16 bytes per grid point for the diamond bounds and their file") + ")";
+  refuseBeyondAddressSpace(need, needText);
   ref::Volume<std::uint16_t> volume;
   int bits = 8;
   if (*type == io::VoxelType::UInt8) {
@@ -82,22 +111,25 @@ int encodeLebCommand(const EncodeOptions& o) {
     volume = io::readRawVolumeU16(o.inputs[0], dims);
     bits = 16;
   }
-  ref::LebEncodeOptions options;
-  options.pageBits = o.pageBits;
-  options.gradients = !o.noGradients;
   std::string stream;
   const auto t0 = std::chrono::steady_clock::now();
   try {
     stream = ref::encodeLeb(volume, bits, options);
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
+  } catch (const std::bad_alloc&) {
+    throw io::IoError(needText + ": out of memory");
   }
   const double seconds = secondsSince(t0);
   // The stream and its bounds are written together: a failure leaves neither.
   std::string bounds;
   if (!o.boundsOut.empty()) {
-    const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
-    bounds = ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values()));
+    try {
+      const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
+      bounds = ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values()));
+    } catch (const std::bad_alloc&) {
+      throw io::IoError(needText + ": out of memory");
+    }
   }
   std::vector<io::FileContent> files{{o.out, stream}};
   if (!o.boundsOut.empty()) files.push_back({o.boundsOut, bounds});
@@ -109,7 +141,7 @@ int encodeLebCommand(const EncodeOptions& o) {
 }
 
 int decodeLebCommand(const DecodeOptions& o) {
-  if (o.step >= 0) throw conf::UsageError("--step is for the timevarying codec");
+  if (o.step) throw conf::UsageError("--step is for the timevarying codec");
   const ref::LebStream s = io::readLebFile(o.input);
   if (!o.gradientsOut.empty() && !s.channel(ref::LebChannelKind::Gradients))
     throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
@@ -120,8 +152,7 @@ int decodeLebCommand(const DecodeOptions& o) {
   const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (the " +
                                std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) + " that covers " +
                                dimsText(s.dims) + ", at 2 bytes per point and component, plus the volume)";
-  if (const std::optional<std::uint64_t> room = addressSpaceLeft(); room && need > *room)
-    throw io::IoError(needText + ", more than the " + std::to_string(*room) + " bytes this process may still allocate (ulimit -v)");
+  refuseBeyondAddressSpace(need, needText);
   ref::LebDecoded d;
   try {
     d = ref::decodeLeb(s);

@@ -27,6 +27,8 @@ ref::TimeSeries loadSeries(const EncodeOptions& o) {
     return ref::dischargePlume(p);
   }
   if (o.inputs.empty()) throw conf::UsageError("give the time steps with --input FILE... (and --dims X Y Z), or --plume");
+  if (o.inputs.size() > 65536)  // before any file is read
+    throw conf::UsageError("--input: " + std::to_string(o.inputs.size()) + " time steps; the .vxtv container holds 1..65536 (FORMAT.md, time_steps)");
   if (o.dims.size() != 3) throw conf::UsageError("--dims needs three extents X Y Z");
   if (o.type != "uint8") throw conf::UsageError("the timevarying codec takes uint8 volumes (--type uint8), got " + o.type);
   const ref::Dims3 dims{o.dims[0], o.dims[1], o.dims[2]};
@@ -55,7 +57,7 @@ void printInfo(const io::TimeVaryingFile& f, std::ostream& out) {
       << "index texture   " << dimsText(f.textures.index.dims) << " " << ref::name(f.textures.index.encoding) << ", " << L.indexSlots
       << "^3 slots\nrefinement      " << dimsText(f.textures.refinement.dims) << " rgba8, " << L.blockSlots << "^3 block slots\n"
       << "transfer        " << f.transfer.name << "; alpha-one cells " << s.alphaOneCells << " ("
-      << (f.alphaOne == ref::AlphaOnePolicy::Paper ? "paper policy: stored as colours, they read as refinement flags" : "refined: lossless")
+      << (f.textures.alphaOne == ref::AlphaOnePolicy::Paper ? "paper policy: stored as colours, they read as refinement flags" : "refined: lossless")
       << ")\ncells           " << s.homogeneousCells << " homogeneous, " << s.refinedCells << " refined\n"
       << "blocks          " << s.distinctBlocks << " distinct, " << s.hashHits << " shared by hash hits, " << s.hashCollisions
       << " hash collisions caught\nindex bytes     " << s.indexBytes << " (allocated " << s.indexBytesAllocated << ")\n"
@@ -83,7 +85,6 @@ int encodeTimeVaryingCommand(const EncodeOptions& o) {
   options.encoding = *encoding;
   if (o.alphaOne != "refine" && o.alphaOne != "paper") throw conf::UsageError("--alpha-one must be refine or paper");
   options.alphaOne = o.alphaOne == "paper" ? ref::AlphaOnePolicy::Paper : ref::AlphaOnePolicy::Refine;
-  f.alphaOne = options.alphaOne;
   try {
     if (o.level == "auto") {
       f.textures = ref::encodeTimeVaryingAutoLevel(series, f.transfer, options);
@@ -107,18 +108,20 @@ int encodeTimeVaryingCommand(const EncodeOptions& o) {
 int decodeTimeVaryingCommand(const DecodeOptions& o) {
   const io::TimeVaryingFile f = io::readTimeVarying(o.input);
   const int steps = f.textures.layout.timeSteps;
-  if (o.step >= steps) throw conf::UsageError("--step " + std::to_string(o.step) + " is outside 0.." + std::to_string(steps - 1));
+  if (o.step && (*o.step < 0 || *o.step >= steps))
+    throw conf::UsageError("--step " + std::to_string(*o.step) + " is outside 0.." + std::to_string(steps - 1) + " (the time steps of " + o.input.string() + ")");
   io::ensureDirectory(o.out);  // only once the input and the options are known to be good
-  conf::Progress progress("voxref decode", steps);
-  for (int t = o.step < 0 ? 0 : o.step; t < (o.step < 0 ? steps : o.step + 1); ++t) {
-    progress.update(t);
+  const int first = o.step.value_or(0), last = o.step ? *o.step : steps - 1;
+  conf::Progress progress("voxref decode", last - first + 1);
+  for (int t = first; t <= last; ++t) {
+    progress.update(t - first);
     const std::vector<ref::Rgba8> voxels = ref::decodeStep(f.textures, t);
     char name[32];
     std::snprintf(name, sizeof name, "step_%03d.rgba", t);
     io::writeFileAtomically(o.out / name, std::string_view(reinterpret_cast<const char*>(voxels.data()), voxels.size() * 4));
   }
   progress.finish();
-  std::cout << "decoded " << (o.step < 0 ? steps : 1) << " time step(s) of " << dimsText(f.textures.layout.original)
+  std::cout << "decoded " << (last - first + 1) << " time step(s) of " << dimsText(f.textures.layout.original)
             << " RGBA8 voxels (x fastest) into " << o.out.string() << "\n";
   return 0;
 }

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,7 +75,7 @@ int runEncode(const EncodeOptions& o);
 struct DecodeOptions {
   std::string codec;
   std::filesystem::path input, out;
-  int step = -1;  // timevarying; -1: every step
+  std::optional<int> step;  // timevarying; none: every step
   std::filesystem::path gradientsOut;  // leb
 };
 int runDecode(const DecodeOptions& o);
@@ -89,12 +90,11 @@ struct FixturesOptions {
   bool generate = false;  // else verify
   std::filesystem::path dir;
   std::string scene = "all";  // a built-in scene name, or all
-  int frames = 0;             // 0: the scene's own orbit length
+  std::optional<int> frames;  // none: the scene's own orbit length
   std::filesystem::path volume;  // the user's volume instead of a built-in scene
   std::vector<int> dims;
   std::string type = "uint8";
-  double isovalue = 0.0;
-  bool isovalueSet = false;
+  std::optional<double> isovalue;  // finite (checked when parsed)
   int threads = 0;
 };
 int runFixtures(const FixturesOptions& o);

@@ -1,9 +1,13 @@
 // voxref: the command line. Subcommands: list, conform, render, bench (DESIGN.md).
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 
 #include "conformance/cli/commands.h"
+#include "conformance/iso/iso_scene.h"
 
 namespace {
 
@@ -12,6 +16,18 @@ std::string joinArgs(int argc, char** argv) {
   for (int i = 0; i < argc; ++i) s += (i ? " " : "") + std::string(argv[i]);
   return s;
 }
+
+// A number that is finite: "nan", "inf" and "1e309" (beyond double) are refused with the option's name.
+const CLI::Validator finiteNumber(
+    [](std::string& s) {
+      char* end = nullptr;
+      errno = 0;
+      const double v = std::strtod(s.c_str(), &end);
+      if (end == s.c_str() || *end != '\0') return "expected a number, got '" + s + "'";
+      if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0)) return "expected a finite number, got '" + s + "'";
+      return std::string();
+    },
+    "FINITE");
 
 }  // namespace
 
@@ -73,7 +89,7 @@ int main(int argc, char** argv) {
   encodeCmd->add_option("--side", encode.plumeSide, "plume: volume side (power of two)")->default_val(128);
   encodeCmd->add_option("--steps", encode.plumeSteps, "plume: time steps")->default_val(36);
   encodeCmd->add_option("--tf", encode.transfer, "transfer function: plume, opaque, gray")->default_val("plume");
-  encodeCmd->add_option("--level", encode.level, "subdivision level, or auto (smallest output)")->default_val("auto");
+  encodeCmd->add_option("--level", encode.level, "subdivision level, or auto (the level whose file is smallest)")->default_val("auto");
   encodeCmd->add_option("--encoding", encode.encoding, "index encoding: normalized_rgba8 (paper), normalized_rgba16, normalized_float, block_rgba8")
       ->default_val("normalized_rgba8");
   encodeCmd->add_option("--alpha-one", encode.alphaOne, "homogeneous colours with alpha 255: refine (lossless) or paper")->default_val("refine");
@@ -88,7 +104,7 @@ int main(int argc, char** argv) {
   decodeCmd->add_option("--input", decode.input, "file to decode")->required();
   decodeCmd->add_option("--out", decode.out,
                         "timevarying: output directory (step_NNN.rgba: RGBA8 voxels, x fastest); leb: the raw volume file")->required();
-  decodeCmd->add_option("--step", decode.step, "timevarying: only this time step")->default_val(-1);
+  decodeCmd->add_option("--step", decode.step, "timevarying: only this time step (0-based; default: every step)");
   decodeCmd->add_option("--gradients-out", decode.gradientsOut, "leb: also write the gradients (3 int8 per sample, x fastest)");
 
   InfoOptions info;
@@ -107,11 +123,12 @@ int main(int argc, char** argv) {
     if (!generate) continue;
     sub->callback([&fixtures] { fixtures.generate = true; });
     sub->add_option("--scene", fixtures.scene, "built-in scene (iso.frames.<scene>), or all")->default_val("all");
-    sub->add_option("--frames", fixtures.frames, "frames of the orbit (0: the scene's)")->default_val(0);
+    sub->add_option("--frames", fixtures.frames, "frames of the orbit (default: the scene's)")
+        ->check(CLI::Range(1, voxref::conf::kMaxIsoSceneFrames));  // the bound the manifest reader applies
     sub->add_option("--volume", fixtures.volume, "your raw volume (.raw or .raw.gz) instead of a built-in scene");
     sub->add_option("--dims", fixtures.dims, "X Y Z of --volume")->expected(3);
     sub->add_option("--type", fixtures.type, "voxel type of --volume: uint8 or uint16 (little endian)")->default_val("uint8");
-    sub->add_option("--isovalue", fixtures.isovalue, "isovalue for --volume (or to override the scene's)")->each([&fixtures](const std::string&) { fixtures.isovalueSet = true; });
+    sub->add_option("--isovalue", fixtures.isovalue, "isovalue for --volume (or to override the scene's)")->check(finiteNumber);
   }
 
   CheckShaderOptions checkShader;

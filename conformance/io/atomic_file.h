@@ -1,5 +1,13 @@
 // Writing files so that nothing is ever half-written: the content goes to a temporary file in
 // the same directory, which is renamed over the destination only when complete.
+//
+// Destinations that are not regular files are never replaced (docs/bad_input.md, "Outputs that
+// are not regular files"): a character device or a FIFO (`--out /dev/null`, a named pipe) is
+// written through, as `cp` and `zstd -o` do; such a write cannot be atomic (a reader of the pipe
+// sees the bytes as they come, and a failure part way leaves what was written). A directory, a
+// block device, a socket or any other kind of file is refused with an IoError naming it. A
+// symbolic link is followed: its target is written (atomically when it is a regular file) and
+// the link stays.
 #pragma once
 
 #include <filesystem>
@@ -23,9 +31,17 @@ class FormatError : public IoError {
   using IoError::IoError;
 };
 
+// How an output path is written: Atomic (a regular file, or nothing there yet: temporary file
+// and rename) or Stream (a character device or FIFO: written through). Throws IoError for a
+// directory, a block device, a socket or another kind of file, naming the path and its kind.
+enum class OutputKind { Atomic, Stream };
+OutputKind outputKind(const std::filesystem::path& destination);
+
 // A temporary path beside `destination` ("<name>.tmp<pid>.<ext>", keeping the extension so that
 // format libraries recognise it). commit() renames it onto the destination; the destructor
-// removes it if commit() was not reached.
+// removes it if commit() was not reached. For a Stream destination the temporary lies in the
+// system's temporary folder and commit() copies it into the stream (not atomic, see above).
+// Throws IoError as outputKind() does.
 class AtomicOutput {
  public:
   explicit AtomicOutput(std::filesystem::path destination);
@@ -37,6 +53,7 @@ class AtomicOutput {
 
  private:
   std::filesystem::path destination_, temporary_;
+  OutputKind kind_ = OutputKind::Atomic;
   bool committed_ = false;
 };
 

@@ -112,8 +112,8 @@ std::vector<unsigned char> readBytes(const std::filesystem::path& path, std::siz
   return bytes;
 }
 
-// The number of voxels of the dimensions; IoError naming the file when they are not positive or
-// exceed ref::sampleCount's limit (checked before anything is read or allocated).
+}  // namespace
+
 std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims) {
   try {
     return ref::sampleCount(dims);
@@ -121,8 +121,6 @@ std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims) 
     throw IoError("volume file " + path.string() + ": the dimensions are out of range: " + e.what());
   }
 }
-
-}  // namespace
 
 std::optional<VoxelType> parseVoxelType(std::string_view s) {
   if (s == "uint8") return VoxelType::UInt8;

@@ -25,6 +25,11 @@ std::optional<VoxelType> parseVoxelType(std::string_view s);
 // volume once the size has matched. Reading stops one byte past the size the dimensions need, so
 // dimensions of 65535^3 over a small file, or a gzip that would expand beyond the dimensions, are
 // refused after allocating at most 64 KiB or twice the data actually there, never the claimed size.
+// The number of voxels of the dimensions of `path`; IoError naming the file when they are not
+// positive or exceed ref::sampleCount's limit. Nothing is read: the readers check this first, and a
+// caller that must size its work before reading (voxref encode --codec leb) calls it itself.
+std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims);
+
 ref::Volume<std::uint8_t> readRawVolumeU8(const std::filesystem::path& path, const ref::Dims3& dims);
 ref::Volume<std::uint16_t> readRawVolumeU16(const std::filesystem::path& path, const ref::Dims3& dims);
 

@@ -10,6 +10,7 @@
 #include "conformance/iso/mesh_image_compare.h"
 #include "conformance/iso/surface_accuracy.h"
 #include "conformance/report/case_images.h"
+#include "gpu/iso_gl.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
 #include "reference/iso/diamond_bounds.h"
@@ -61,6 +62,21 @@ void showFrame(CaseContext& ctx, CaseResult& r, const ShownFrame& shown, bool wr
   io::writePng(ctx.outDir() / r.images.errorMask, errorMaskPreview(glShade, 1.0, flags));
 }
 
+// The finding of a driver that drops the fragments of a shader reading gl_PrimitiveID without a
+// geometry shader (gpu/iso_gl.h, checkPrimitiveIdGl): measured on GL in every frame case, so that
+// a black mesh image is reported as what it is.
+constexpr const char* kPrimitiveIdFinding = "gl.fragment.primitive_id_without_geometry_shader_drops_fragments";
+
+std::optional<Finding> primitiveIdFinding(const gpu::PrimitiveIdCheck& c) {
+  if (!c.driverDropsPrimitiveIdDraws()) return std::nullopt;
+  return Finding{kPrimitiveIdFinding,
+                 "a fragment shader that reads gl_PrimitiveID with no geometry shader bound draws " + std::to_string(c.drawnWithId) + " of " +
+                     std::to_string(c.pixels) + " pixels of a triangle that covers the target, and raises no GL error; the same program writing a "
+                     "constant id draws all " + std::to_string(c.drawnByControl) + " (GL 4.6 section 15.2.2: without a geometry shader "
+                     "gl_PrimitiveID is the primitive's number in the draw)",
+                 {{"check_pixels", c.pixels}, {"drawn_with_primitive_id", c.drawnWithId}, {"drawn_by_control", c.drawnByControl}}};
+}
+
 CaseResult notRun(CaseResult r, const std::string& why) {
   r.status = Status::Skip;
   r.message = why;
@@ -74,6 +90,7 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
   r.system = "iso";
   r.description = description;
   if (ctx.gl() == nullptr) return notRun(r, "no GL context");
+  const std::optional<Finding> primitiveId = primitiveIdFinding(gpu::checkPrimitiveIdGl(*ctx.gl()));
   IsoRunOptions options;
   options.keepImages = true;
   options.threads = ctx.threads();
@@ -138,17 +155,24 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
                            " invisible candidates (" + std::to_string(std::lround(100.0 * efficiency)) + " %)",
                        {{"false_culls", falseCulls}, {"efficiency", efficiency}, {"tests", tests}}});
   const bool imagesAgree = coverageFail == 0 && depthFail == 0 && visibilityFail == 0;
+  if (primitiveId) {  // findings inform; the verdict stays the mesh image's
+    Finding f = *primitiveId;
+    f.figures["samples_changed"] = coverageFail;  // pixels the truth covers that GL left empty
+    r.findings.push_back(f);
+  }
+  const std::string driverNote =
+      primitiveId && coverageFail > 0 ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " + std::string(kPrimitiveIdFinding) + ")" : "";
   r.oracles.push_back({"mesh_image", imagesAgree ? Verdict::Pass : Verdict::Fail,
                        std::to_string(coverageFail) + " coverage, " + std::to_string(depthFail) + " depth and " + std::to_string(visibilityFail) +
-                           " visibility failures; " + std::to_string(same) + " pixels show the same triangle, " + std::to_string(otherAllowed) +
-                           " another one within the snapping allowance; worst depth " + std::to_string(worstOverBound) + " of its allowance (" +
-                           std::to_string(worstDepth) + " grid units)",
+                           " visibility failures" + driverNote + "; " + std::to_string(same) + " pixels show the same triangle, " +
+                           std::to_string(otherAllowed) + " another one within the snapping allowance; worst depth " + std::to_string(worstOverBound) +
+                           " of its allowance (" + std::to_string(worstDepth) + " grid units)",
                        {{"coverage_failures", coverageFail}, {"depth_failures", depthFail}, {"visibility_failures", visibilityFail},
                         {"same_triangle_pixels", same}, {"other_triangle_allowed", otherAllowed}}});
   if (expectEmpty)
     r.oracles.push_back({"empty", triangles == 0 ? Verdict::Pass : Verdict::Fail,
                          std::to_string(triangles) + " triangles for an isovalue outside the data range", {}});
-  r.status = statusFromOracles(r.oracles);
+  concludeFromOracles(r);
   if (shown.frame) showFrame(ctx, r, shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
   return r;
 }
@@ -164,17 +188,16 @@ CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene
   const ref::DiamondBounds bounds = ref::computeDiamondBounds(field.grid(), field.values(), ctx.threads());
   const ref::ViewCamera camera = ref::orbitCamera(scene.path, 0, scene.camera);
   const fx::RayImage exact = fx::castTrilinearIsosurface(volume, scene.isovalue, camera, ctx.threads());
-  nlohmann::json rows = nlohmann::json::array();
+  nlohmann::json rows = nlohmann::json::array(), seconds = nlohmann::json::array();
   std::string summary;
   for (double threshold : {8.0, 2.0, 0.5, 0.0}) {
     const auto t0 = std::chrono::steady_clock::now();
     const ThresholdSurface surface = extractAtThreshold(bounds, field, camera, scene.isovalue, threshold);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    seconds.push_back({{"threshold_px", threshold}, {"refine_and_extract_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}});
     const SurfaceError e = compareSurfaces(fx::castMesh(surface.mesh, camera, ctx.threads()), exact);
     rows.push_back({{"threshold_px", threshold},
                     {"triangles", surface.stats.triangles},
                     {"split_diamonds", surface.splitDiamonds},
-                    {"refine_and_extract_s", seconds},
                     {"mean_depth_error", e.meanDepth},
                     {"max_depth_error", e.maxDepth},
                     {"silhouette_pixels", e.silhouettePixels}});
@@ -182,6 +205,7 @@ CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene
                std::to_string(e.meanDepth).substr(0, 6) + ", " + std::to_string(e.silhouettePixels) + " silhouette px; ";
   }
   r.figures["thresholds"] = rows;
+  r.timings["thresholds"] = seconds;
   r.oracles.push_back({"ideal", Verdict::Info, summary, {}});
   r.status = Status::Pass;
   return r;

@@ -71,17 +71,58 @@ std::vector<std::string> writeScene(const std::filesystem::path& dir, const IsoS
 
 }  // namespace
 
-nlohmann::json generateIsoFixtures(const std::filesystem::path& dir, const std::vector<IsoScene>& scenes, int threads,
+nlohmann::json generateIsoFixtures(const std::filesystem::path& dirIn, const std::vector<IsoScene>& scenes, int threads,
                                    const std::function<void(const std::string&)>& progress) {
-  // No directory is made before a scene's volume has been read (writeScene makes <dir>/<scene>):
-  // a volume that is missing or of the wrong size leaves nothing behind.
-  nlohmann::json manifest{{"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
+  // Every scene is checked before anything is made, naming the scene and its data.
   for (const IsoScene& s : scenes) {
-    manifest["scenes"].push_back(toJson(s));
-    for (const std::string& f : writeScene(dir, s, threads, progress)) manifest["files"].push_back({{"path", f}, {"sha256", io::sha256OfFile(dir / f)}});
+    try {
+      validateIsoScene(s);
+    } catch (const std::exception& e) {
+      throw std::invalid_argument("scene '" + s.name + "' (" + (s.volumeFile.empty() ? s.data : s.volumeFile.string()) + ", " +
+                                  std::to_string(s.dims[0]) + "x" + std::to_string(s.dims[1]) + "x" + std::to_string(s.dims[2]) + "): " + e.what());
+    }
   }
+  const std::filesystem::path dir = dirIn.filename().empty() ? dirIn.parent_path() : dirIn;  // "fx/" is "fx"
+  std::error_code ec;
+  if (std::filesystem::exists(dir, ec) && !std::filesystem::is_directory(dir, ec))
+    throw io::IoError("cannot create directory " + dir.string() + ": a file that is not a directory has that name");
+  // Everything is made in a staging folder beside dir (the same file system, so renames), which
+  // goes whatever happens: a failure part way (a volume that is missing or of the wrong size, a
+  // full disk) leaves nothing behind, not even dir.
+  const std::filesystem::path staging = dir.parent_path() / (dir.filename().string() + ".tmp" + std::to_string(::getpid()));
+  struct RemoveStaging {
+    const std::filesystem::path& dir;
+    ~RemoveStaging() {
+      std::error_code ignored;
+      std::filesystem::remove_all(dir, ignored);
+    }
+  } const removeStaging{staging};
+  std::filesystem::remove_all(staging, ec);
+  io::ensureDirectory(staging);
+  nlohmann::json manifest{{"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
+  try {
+    for (const IsoScene& s : scenes) {
+      manifest["scenes"].push_back(toJson(s));
+      for (const std::string& f : writeScene(staging, s, threads, progress))
+        manifest["files"].push_back({{"path", f}, {"sha256", io::sha256OfFile(staging / f)}});
+    }
+    io::writeFileAtomically(staging / "manifest.json", manifest.dump(2) + "\n");
+  } catch (const io::IoError& e) {  // named by the destination the user gave, not the staging folder
+    std::string what = e.what();
+    for (std::size_t at = what.find(staging.string()); at != std::string::npos; at = what.find(staging.string(), at + dir.string().size()))
+      what.replace(at, staging.string().size(), dir.string());
+    throw io::IoError(what + " (while staging in " + staging.string() + ", removed)");
+  }
+  // Into place: the fixture files first, the manifest that lists them last.
   io::ensureDirectory(dir);
-  io::writeFileAtomically(dir / "manifest.json", manifest.dump(2) + "\n");
+  std::vector<std::string> moves;
+  for (const auto& f : manifest["files"]) moves.push_back(f["path"].get<std::string>());
+  moves.push_back("manifest.json");
+  for (const std::string& f : moves) {
+    io::ensureDirectory((dir / f).parent_path());
+    std::filesystem::rename(staging / f, dir / f, ec);
+    if (ec) throw io::IoError("cannot move " + (staging / f).string() + " to " + (dir / f).string() + ": " + ec.message());
+  }
   return manifest;
 }
 

@@ -26,7 +26,10 @@ namespace voxref::conf {
 
 inline constexpr const char* kFixtureGenerator = "voxref 0.1.0 iso fixtures 1";
 
-// Writes the fixtures and the manifest (atomically, file by file); returns the manifest.
+// Writes the fixtures and the manifest; returns the manifest. Every scene is validated first
+// (validateIsoScene; std::invalid_argument naming the scene), and everything is made in a staging
+// folder beside `dir` that is moved into place only when complete (the manifest last): a failure
+// leaves nothing behind. Throws io::IoError naming the file for a volume or folder problem.
 nlohmann::json generateIsoFixtures(const std::filesystem::path& dir, const std::vector<IsoScene>& scenes, int threads,
                                    const std::function<void(const std::string&)>& progress = {});
 

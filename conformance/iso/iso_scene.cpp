@@ -1,6 +1,7 @@
 #include "conformance/iso/iso_scene.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -90,9 +91,18 @@ IsoScene isoSceneFromJson(const nlohmann::json& j) {
   s.budget.threshold = numberAt(r, "threshold_px", "refinement.");
   s.budget.maxSplits = static_cast<std::size_t>(integerAt(r.at("max_splits"), "refinement.max_splits", 0, std::numeric_limits<std::int64_t>::max()));
   s.budget.maxMerges = static_cast<std::size_t>(integerAt(r.at("max_merges"), "refinement.max_merges", 0, std::numeric_limits<std::int64_t>::max()));
+  validateIsoScene(s);
+  return s;
+}
+
+void validateIsoScene(const IsoScene& s) {
   // What regenerating the scene would refuse is refused here, naming the field: a data name that is
   // no field, and an orbit or camera that is degenerate at some frame (fov, near and far, eye on
   // the target).
+  if (!std::isfinite(s.isovalue)) throw JsonFieldError("isovalue: expected a finite number, got " + std::to_string(s.isovalue));
+  for (std::size_t a = 0; a < 3; ++a)
+    if (s.dims[a] < 1 || s.dims[a] > kMaxIsoSceneExtent)
+      throw JsonFieldError("dims[" + std::to_string(a) + "]: expected 1.." + std::to_string(kMaxIsoSceneExtent) + ", got " + std::to_string(s.dims[a]));
   if (s.volumeFile.empty() && s.data != "single_voxel" && s.data != "plateau" && s.data != "empty" && s.data != "full") {
     try {
       (void)ref::analyticField(s.data);
@@ -105,7 +115,6 @@ IsoScene isoSceneFromJson(const nlohmann::json& j) {
   } catch (const std::invalid_argument& e) {
     throw JsonFieldError(e.what());  // "camera: fov_y must be in (0, 180) degrees", "camera: need 0 < near < far"
   }
-  return s;
 }
 
 ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
@@ -139,7 +148,7 @@ ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
 
 void aimOrbitAt(IsoScene& s, const ref::Dims3& dims) {
   s.dims = dims;
-  const double c = (std::max({dims[0], dims[1], dims[2]}) - 1) / 2.0;
+  const double c = std::max((std::max({dims[0], dims[1], dims[2]}) - 1) / 2.0, 0.5);
   s.path.center = {(dims[0] - 1) / 2.0, (dims[1] - 1) / 2.0, (dims[2] - 1) / 2.0};
   s.path.radius = 2.2 * c;
   s.camera.farPlane = 8.0 * c;

@@ -41,7 +41,8 @@ struct IsoScene {
 };
 
 // Points the orbit at the centre of `dims` at 2.2 half-extents of its largest axis, the far plane at
-// 8 half-extents; sets scene.dims.
+// 8 half-extents (a half-extent of at least 0.5: a single sample still gets a valid camera); sets
+// scene.dims.
 void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 
 // The scene as JSON and back (fixture manifests). fromJson throws nlohmann::json exceptions that
@@ -52,6 +53,12 @@ void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxLebK) + 1, kMaxIsoSceneFrames = 10000, kMaxIsoSceneImageSide = 4096;
 nlohmann::json toJson(const IsoScene& scene);
 IsoScene isoSceneFromJson(const nlohmann::json& j);
+
+// What regenerating a scene would refuse, refused before anything is made: an isovalue that is no
+// finite number, a data name that is no field, an orbit camera that is degenerate at some frame.
+// Throws JsonFieldError naming the field (isoSceneFromJson calls it; so does the fixture
+// generator, for scenes made on the command line).
+void validateIsoScene(const IsoScene& scene);
 
 // The volume of the scene (deterministic). Throws io::IoError for a missing or short volume file,
 // std::invalid_argument for data it cannot build: an unknown field, a single_voxel volume below

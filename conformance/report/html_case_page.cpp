@@ -119,7 +119,9 @@ std::string htmlCasePage(const RunInfo& run, const CaseResult& r) {
     << htmlEscape(r.description) << "</p>\n<table><tr><th>system</th><td>" << htmlEscape(r.system) << "</td></tr>";
   char secs[96];
   std::snprintf(secs, sizeof secs, "%.3f / %.3f / %.3f", r.secondsGl, r.secondsEmulation, r.secondsReference);
-  h << "<tr><th>seconds (GL / emulation / reference)</th><td class=\"num\">" << secs << "</td></tr></table>\n";
+  h << "<tr><th>seconds (GL / emulation / reference)</th><td class=\"num\">" << secs << "</td></tr>";
+  if (r.timings.is_object() && !r.timings.empty()) h << "<tr><th>other times (wall clock)</th><td>" << figuresHtml(r.timings) << "</td></tr>";
+  h << "</table>\n";
   const bool died = r.status == Status::Crash || r.status == Status::Timeout;
   if (!r.message.empty())
     h << (died ? "<pre id=\"message\">" : "<p id=\"message\" class=\"message\">") << htmlEscape(r.message) << (died ? "</pre>\n" : "</p>\n");

@@ -8,6 +8,7 @@
 #include "conformance/report/html_baseline.h"
 #include "conformance/report/html_escape.h"
 #include "conformance/report/html_page.h"
+#include "emulation/profile.h"
 
 namespace voxref::conf {
 namespace {
@@ -73,7 +74,25 @@ void summaryBlock(std::ostringstream& h, const std::vector<CaseResult>& results)
   h << "</tr></tbody></table>\n";
 }
 
-void findingsBlock(std::ostringstream& h, const std::vector<CaseResult>& results) {
+// What the run can say about departures when no finding was made: that depends on whether a
+// profile (a model of the driver's arithmetic and of its named departures) was used at all.
+std::string noFindingText(const RunInfo& run) {
+  const nlohmann::json& p = run.driver.is_object() ? run.driver.value("profile", nlohmann::json::object()) : nlohmann::json::object();
+  const nlohmann::json name = p.is_object() ? p.value("name", nlohmann::json()) : nlohmann::json();
+  if (!name.is_string())
+    return "Unknown: this run used no precision profile, so no model of the driver's departures from the GL semantics was applied; "
+           "none were measured on GL directly either.";
+  const emu::PrecisionProfile* profile = emu::findProfile(name.get<std::string>());
+  std::string modelled;
+  for (const emu::Departure& d : profile ? emu::departuresFromGlSemantics(*profile) : std::vector<emu::Departure>{})
+    modelled += std::string(modelled.empty() ? "" : ", ") + "<code>" + htmlEscape(std::string(d.id)) + "</code>";
+  return modelled.empty() ? "None: the profile " + htmlEscape(name.get<std::string>()) + " models no departure from the GL semantics, and none "
+                                "was measured on GL directly."
+                          : "None in these cases: the profile " + htmlEscape(name.get<std::string>()) + " models " + modelled +
+                                ", and no case of this run met one.";
+}
+
+void findingsBlock(std::ostringstream& h, const RunInfo& run, const std::vector<CaseResult>& results) {
   struct Agg {
     std::string description;
     int cases = 0, casesChanged = 0;
@@ -92,7 +111,7 @@ void findingsBlock(std::ostringstream& h, const std::vector<CaseResult>& results
     }
   h << "<h2 id=\"findings\">Departures from GL semantics</h2>\n";
   if (findings.empty()) {
-    h << "<p>None: the profile of this driver models no departure from the GL semantics.</p>\n";
+    h << "<p>" << noFindingText(run) << "</p>\n";
     return;
   }
   h << "<table><tr><th>finding</th><th>what</th><th>cases where it changes samples</th><th>samples changed</th></tr>\n";
@@ -181,7 +200,7 @@ std::string htmlIndex(const RunInfo& run, const std::vector<CaseResult>& results
   driverBlock(h, run);
   summaryBlock(h, results);
   h << baselineSection(run.baseline);
-  findingsBlock(h, results);
+  findingsBlock(h, run, results);
   casesBlock(h, results);
   h << pageTail(kFilterScript);
   return h.str();

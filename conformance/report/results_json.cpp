@@ -37,6 +37,7 @@ nlohmann::json caseJson(const CaseResult& r) {
           {"seconds_gl", r.secondsGl},
           {"seconds_emulation", r.secondsEmulation},
           {"seconds_reference", r.secondsReference},
+          {"timings", r.timings},
           {"images", images},
           {"worst_pixels", worst}};
 }

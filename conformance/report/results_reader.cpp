@@ -77,6 +77,10 @@ CaseResult caseFromJson(const nlohmann::json& j) {
   r.secondsGl = number(j, "seconds_gl", where);
   r.secondsEmulation = number(j, "seconds_emulation", where);
   r.secondsReference = number(j, "seconds_reference", where);
+  if (const auto it = j.find("timings"); it != j.end()) {  // absent in results.json of earlier versions
+    if (!it->is_object()) throw ResultsFormatError(where + ".timings: expected an object");
+    r.timings = *it;
+  }
   const nlohmann::json& images = field(j, "images", where);
   r.images.rendered = optionalText(images, "rendered");
   r.images.emulated = optionalText(images, "emulated");

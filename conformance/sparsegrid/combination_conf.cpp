@@ -391,17 +391,11 @@ CaseResult judgeCombination(CaseContext& ctx, const std::string& id, const std::
   else if (emuStack)
     result.oracles.push_back(idealOracle(*r, *emuStack, *emuImage, refImage, "emulated"));
 
-  result.status = statusFromOracles(result.oracles);
+  concludeFromOracles(result);
   if (!r->gl && ref::existsInGl(scene.framebuffer)) {
     // GL could not run what the case is about: a skip with the reason, never a pass.
     result.status = Status::Skip;
     result.message = r->glNotRun;
-  } else if (result.status != Status::Pass) {
-    for (const OracleResult& o : result.oracles)
-      if (o.verdict == Verdict::Fail || o.verdict == Verdict::Warn) {
-        result.message = o.oracle + ": " + o.summary;
-        break;
-      }
   }
   if (ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn)
     writeImages(ctx, result, glImage ? &*glImage : nullptr, emuImage ? &*emuImage : nullptr, refImage, flags);

@@ -100,8 +100,7 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
                       {"quantization_bound", bound}, {"expected_smallest_error", 0.6}, {"per_order", perOrder}}};
   result.oracles = {exact, paper};
   result.figures = {{"orders", orders}, {"scene", toJson(scene)}};
-  result.status = statusFromOracles(result.oracles);
-  if (result.status != Status::Pass) result.message = paper.summary;
+  concludeFromOracles(result);
   return result;
 }
 
@@ -114,7 +113,7 @@ CaseResult scaledIsCorrect(CaseContext& ctx) {
   result.oracles.push_back({"bound", err <= bound ? Verdict::Pass : Verdict::Fail,
                             "max error " + std::to_string(err) + " against the quantization bound " + std::to_string(bound),
                             {{"max_abs_error", err}, {"quantization_bound", bound}}});
-  result.status = statusFromOracles(result.oracles);
+  concludeFromOracles(result);
   return result;
 }
 

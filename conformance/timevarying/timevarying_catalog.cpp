@@ -65,8 +65,7 @@ CaseResult capacityExceeded(CaseContext& ctx) {
     const bool glOk = glError.find("exceeds GL_MAX_3D_TEXTURE_SIZE") != std::string::npos;
     r.oracles.push_back({"gl", glOk ? Verdict::Pass : Verdict::Fail, glOk ? "GlUnsupported: " + glError : "the GL path did not refuse the texture", {}});
   }
-  r.status = statusFromOracles(r.oracles);
-  if (r.status != Status::Pass) r.message = "capacity errors are not clear";
+  concludeFromOracles(r);
   return r;
 }
 

@@ -254,16 +254,10 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   const OracleResult envelope = envelopeOracle.result();
   result.worstPixels = envelopeOracle.worstPixels();
   result.oracles = {exact, envelope, fetch, ideal};
-  result.status = statusFromOracles(result.oracles);
+  concludeFromOracles(result);
   if (!glNotRun.empty() && ctx.gl()) {
     result.status = Status::Skip;
     result.message = glNotRun;
-  } else if (result.status != Status::Pass) {
-    for (const OracleResult& o : result.oracles)
-      if (o.verdict == Verdict::Fail) {
-        result.message = o.oracle + ": " + o.summary;
-        break;
-      }
   }
   if ((ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn) && firstExact) {
     const int plane = scene.composite ? 0 : firstExact->planes / 2;

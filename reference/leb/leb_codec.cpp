@@ -109,6 +109,12 @@ ChannelDeltas predictChannelOf(const HzOrder& order, const Volume<std::uint16_t>
   return predictChannel(order, volume.dims(), spec, pageBits, [&](std::size_t vi, int k) { return static_cast<std::int32_t>(grads[3 * vi + static_cast<std::size_t>(k)]); });
 }
 
+void checkPageBits(int pageBits) {
+  if (pageBits < kMinLebPageBits || pageBits > kMaxLebPageBits)
+    throw std::invalid_argument("page bits must be in " + std::to_string(kMinLebPageBits) + ".." + std::to_string(kMaxLebPageBits) + ", got " +
+                                std::to_string(pageBits));
+}
+
 void checkSamples(const Volume<std::uint16_t>& volume, int sampleBits) {
   if (sampleBits != 8 && sampleBits != 16) throw std::invalid_argument("sample bits must be 8 or 16, got " + std::to_string(sampleBits));
   const std::uint32_t limit = 1u << sampleBits;
@@ -122,9 +128,7 @@ void checkSamples(const Volume<std::uint16_t>& volume, int sampleBits) {
 
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& o) {
   checkSamples(volume, sampleBits);
-  if (o.pageBits < kMinLebPageBits || o.pageBits > kMaxLebPageBits)
-    throw std::invalid_argument("page bits must be in " + std::to_string(kMinLebPageBits) + ".." + std::to_string(kMaxLebPageBits) + ", got " +
-                                std::to_string(o.pageBits));
+  checkPageBits(o.pageBits);
   const LebGrid grid = lebGridCovering(volume.dims());
   const HzOrder order(grid);
   std::vector<LebChannelPayload> channels;
@@ -149,6 +153,26 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
     channels.push_back(std::move(c));
   }
   return serializeLebStream(volume.dims(), sampleBits, grid, o.pageBits, channels);
+}
+
+std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o) {
+  checkPageBits(o.pageBits);
+  const LebGrid grid = lebGridCovering(dims);
+  const auto samples = static_cast<std::uint64_t>(dims[0]) * static_cast<std::uint64_t>(dims[1]) * static_cast<std::uint64_t>(dims[2]);
+  const auto bricks = static_cast<std::uint64_t>((grid.pointsPerAxis() + 7) / 8);
+  const auto points = static_cast<std::uint64_t>(grid.pointsPerAxis());
+  const std::uint64_t pages = (points * points * points + (std::uint64_t{1} << o.pageBits) - 1) >> o.pageBits;
+  // A coded value takes at most kMaxCodeLength + 17 magnitude and sign bits < 4 bytes
+  // (lead1_coder.h); each page adds a flush byte and its std::string.
+  auto coded = [&](int components) { return 4 * samples * static_cast<std::uint64_t>(components) + pages * 64; };
+  std::uint64_t peak = 0, pagesSoFar = 0;
+  for (const int components : o.gradients ? std::vector<int>{1, 3} : std::vector<int>{1}) {
+    const std::uint64_t gridBytes = bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(components) * 2;  // GridValues
+    const std::uint64_t gradients = components == 3 ? 3 * samples : 0;
+    peak = std::max(peak, gridBytes + 4 * samples * static_cast<std::uint64_t>(components) + gradients + pagesSoFar + coded(components));
+    pagesSoFar += coded(components);
+  }
+  return std::max(peak, 2 * pagesSoFar);  // serializing: the pages and the stream they make
 }
 
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {

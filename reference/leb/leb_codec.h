@@ -31,7 +31,17 @@ struct LebEncodeOptions {
 
 // Throws std::invalid_argument for sampleBits other than 8 or 16, a sample >= 2^sampleBits, page
 // bits outside [kMinLebPageBits, kMaxLebPageBits] or a volume larger than the largest grid.
+//
+// Memory: at most lebEncodeMemoryBytes(dims, options) beside the volume itself: the grid's values
+// of one channel at a time, (2^k + 1)^3 x components x 2 bytes (rounded up to 8^3 bricks), that
+// channel's deltas (4 bytes per coded value), the gradients (3 bytes per sample), the coded pages
+// and the stream. The grid covers the volume, so a thin volume pays for the whole cube (1025x1x1
+// samples need a 1025^3 grid, 2.2 GB for the data channel): a caller compares the bound with what
+// it may allocate before reading the volume (voxref encode does).
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& options = {});
+// The bound above, from the extents alone (nothing is allocated). Throws std::invalid_argument as
+// encodeLeb does for extents larger than the largest grid.
+std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& options = {});
 
 struct LebDecoded {
   Volume<std::uint16_t> data;

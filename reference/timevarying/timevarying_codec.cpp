@@ -129,6 +129,7 @@ TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFu
     throw std::invalid_argument("subdivision level " + std::to_string(o.level) + " is outside 1.." + std::to_string(maxLevel) +
                                 " for " + std::to_string(side) + "^3 volumes");
   TimeVaryingTextures out;
+  out.alphaOne = o.alphaOne;
   TimeVaryingLayout& L = out.layout;
   L.side = side;
   L.timeSteps = static_cast<int>(series.steps.size());
@@ -260,7 +261,10 @@ TimeVaryingTextures encodeTimeVaryingAutoLevel(const TimeSeries& series, const T
     options.level = level;
     try {
       TimeVaryingTextures t = encodeTimeVarying(series, tf, options);
-      if (!best || t.stats.indexBytes + t.stats.refinementBytes < best->stats.indexBytes + best->stats.refinementBytes) best = std::move(t);
+      // The textures as allocated are what a file stores (the .vxtv container keeps whole
+      // textures): the fewest allocated bytes make the smallest file.
+      const auto bytes = [](const TimeVaryingTextures& x) { return x.stats.indexBytesAllocated + x.stats.refinementBytesAllocated; };
+      if (!best || bytes(t) < bytes(*best)) best = std::move(t);
     } catch (const CapacityError& e) {
       lastError = e.what();
     }
@@ -319,8 +323,40 @@ VoxelAddress addressOfVoxel(const TimeVaryingTextures& tex, int t, int x, int y,
   return a;
 }
 
+namespace {
+
+// The refinement texel the paper's decoder reads for a flagged index texel whose stored address
+// lies past the refinement texture: clamped to the last texel per axis (CLAMP_TO_EDGE).
+VoxelAddress clampedPaperAddress(const TimeVaryingTextures& tex, int t, int x, int y, int z) {
+  const TimeVaryingLayout& L = tex.layout;
+  VoxelAddress a;
+  const int r = L.blockSide;
+  const auto slot = indexSlot(L, t);
+  a.indexTexel = {slot[0] * L.cells + x / r, slot[1] * L.cells + y / r, slot[2] * L.cells + z / r};
+  const std::uint32_t* texel =
+      &tex.index.texels[4 * (static_cast<std::size_t>(a.indexTexel[0]) +
+                             static_cast<std::size_t>(tex.index.dims[0]) * (a.indexTexel[1] + static_cast<std::size_t>(tex.index.dims[1]) * a.indexTexel[2]))];
+  a.refined = true;
+  const auto k = blockOfIndexTexel(L, tex.index.encoding, texel);
+  const int within[3] = {x % r, y % r, z % r};
+  for (int i = 0; i < 3; ++i) a.refinementTexel[i] = std::clamp(k[i] * r + within[i], 0, tex.refinement.dims[i] - 1);
+  return a;
+}
+
+}  // namespace
+
 Rgba8 decodeVoxel(const TimeVaryingTextures& tex, int t, int x, int y, int z) {
-  const VoxelAddress a = addressOfVoxel(tex, t, x, y, z);
+  VoxelAddress a;
+  try {
+    a = addressOfVoxel(tex, t, x, y, z);
+  } catch (const std::out_of_range&) {
+    // Coordinates outside the series are refused again by addressOfVoxel; a colour read as an
+    // address past the texture is what the paper's policy stores.
+    if (tex.alphaOne != AlphaOnePolicy::Paper || t < 0 || t >= tex.layout.timeSteps || x < 0 || y < 0 || z < 0 || x >= tex.layout.side ||
+        y >= tex.layout.side || z >= tex.layout.side || tex.refinement.texels.empty())
+      throw;
+    a = clampedPaperAddress(tex, t, x, y, z);
+  }
   if (!a.refined) {
     const auto& it = a.indexTexel;
     return colourOfIndexTexel(tex.index.encoding, &tex.index.texels[4 * (static_cast<std::size_t>(it[0]) +

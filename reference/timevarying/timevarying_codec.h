@@ -109,6 +109,7 @@ struct EncodeStats {
 
 struct TimeVaryingTextures {
   TimeVaryingLayout layout;
+  AlphaOnePolicy alphaOne = AlphaOnePolicy::Refine;  // how the encoder stored alpha-one colours
   IndexTexture index;
   RefinementTexture refinement;
   EncodeStats stats;
@@ -125,8 +126,10 @@ class CapacityError : public std::length_error {
 // CapacityError as above.
 TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFunction& tf, const TimeVaryingOptions& options);
 
-// `--level auto`: encodes at every level and returns the one with the fewest used bytes (index +
-// refinement); ties go to the lower level. Levels that exceed a capacity are skipped.
+// `--level auto`: encodes at every level and returns the one with the fewest allocated texture
+// bytes (index + refinement textures as stored, unused slots included), which is the smallest
+// .vxtv file (its other sections do not depend on the level); ties go to the lower level. Levels
+// that exceed a capacity are skipped.
 TimeVaryingTextures encodeTimeVaryingAutoLevel(const TimeSeries& series, const TransferFunction& tf, TimeVaryingOptions options);
 
 // Slot positions (in slots) of time step t and of block k.
@@ -155,7 +158,14 @@ struct VoxelAddress {
 VoxelAddress addressOfVoxel(const TimeVaryingTextures& textures, int t, int x, int y, int z);
 
 // Exact decoder, integer addressing: the colour of voxel (x, y, z) of step t (coordinates in the
-// padded cube). Throws std::out_of_range for coordinates or an address outside the textures.
+// padded cube). Under the refine policy this is the input after the transfer function. Under the
+// paper's policy a flagged texel that stores a colour is read as an address, as the paper's
+// decoder reads it (the flag collision of section 5.1): where that address lies past the
+// refinement texture, the last texel on that axis is read (CLAMP_TO_EDGE, the wrap of every
+// decoder; GL 4.6 section 8.14.2), and a block slot that holds no block reads as stored (zero).
+// So every file the encoder writes decodes (conformance/io/timevarying/FORMAT.md).
+// Throws std::out_of_range for coordinates outside the series, or for an address outside the
+// textures under the refine policy (a corrupt texture).
 Rgba8 decodeVoxel(const TimeVaryingTextures& textures, int t, int x, int y, int z);
 // A whole step in its original extents, RGBA8 per voxel, x fastest.
 std::vector<Rgba8> decodeStep(const TimeVaryingTextures& textures, int t);

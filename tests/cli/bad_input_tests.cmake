@@ -134,6 +134,13 @@ voxref_bad_input(vxtv.input_is_a_directory MKDIRS "adir.vxtv" COMMAND "${tv_deco
   EXPECT "<DIR>/adir\\.vxtv is not a regular file")
 voxref_bad_input(vxtv.step_out_of_range MAKE "${mbi}|<GOOD>/plume.vxtv|<DIR>/good.vxtv" COMMAND "${tv_decode}|<DIR>/good.vxtv|--step|7|--out|<DIR>/steps"
   NEEDS bi_plume EXPECT "--step 7 is outside 0\\.\\.1")
+voxref_bad_input(vxtv.step_negative MAKE "${mbi}|<GOOD>/plume.vxtv|<DIR>/good.vxtv" COMMAND "${tv_decode}|<DIR>/good.vxtv|--step|-5|--out|<DIR>/steps"
+  NEEDS bi_plume EXPECT "--step -5 is outside 0\\.\\.1")
+# 65,537 time steps (one more than the container holds) are refused before any input is read: the
+# files need not exist (the shell repeats the name v; no ';' or '|', which the catalogue splits on).
+voxref_bad_input(option.time_steps_beyond_the_container
+  COMMAND "sh|-c|set -- $(printf 'v %.0s' $(seq 65537)) && exec \"$0\" encode --codec timevarying --dims 1 1 1 --out <DIR>/out.vxtv --input \"$@\"|${voxref_bin}"
+  EXPECT "--input: 65537 time steps. the \\.vxtv container holds 1\\.\\.65536")
 voxref_bad_input(vxtv.out_is_a_regular_file MAKE "${mbi}|<GOOD>/plume.vxtv|<DIR>/good.vxtv" COMMAND "${tv_decode}|<DIR>/good.vxtv|--out|<DIR>/steps"
   PRE "steps" NEEDS bi_plume EXPECT "cannot create directory <DIR>/steps")
 # Resource limit: a header whose every field agrees (side 512, 65536 steps, level 7: 128^3 cells of
@@ -205,6 +212,11 @@ voxref_bad_input(vxleb.page_table_claims_half_a_gigabyte
 voxref_bad_input(vxleb.thin_volume_needs_more_than_the_limit MAKE "${mbi}|<GOOD>/thin.vxleb|<DIR>/thin.vxleb"
   COMMAND "${leb_decode}|<DIR>/thin.vxleb|--out|<DIR>/thin.raw" ULIMIT_V 1000000 NEEDS bi_thin
   EXPECT "<DIR>/thin\\.vxleb: decoding needs [0-9]+ bytes \\(the 513\\^3 grid of k = 9 that covers 513x1x1[^\n]*more than[^\n]*\\(ulimit -v\\)")
+# Encoding a thin volume needs the whole covering grid too: refused from the extents, before the
+# volume is read (it was a bare std::bad_alloc).
+voxref_bad_input(vxleb.encode_thin_volume_needs_more_than_the_limit MAKE "${mbi}|<GOOD>/steps/step_000.rgba|<DIR>/thin.raw|truncate:1025"
+  COMMAND "${voxref_bin}|encode|--codec|leb|--input|<DIR>/thin.raw|--dims|1025|1|1|--out|<DIR>/thin.vxleb" ULIMIT_V 1000000 NEEDS bi_volume
+  EXPECT "<DIR>/thin\\.raw: encoding needs [0-9]+ bytes \\(the 1025\\^3 grid of k = 10 that covers 1025x1x1[^\n]*more than[^\n]*\\(ulimit -v\\)")
 
 # --- Raw volumes and gzip (conformance/io/raw_volume.h): --input of `voxref encode`, --volume of
 # `voxref fixtures generate`. The good volume holds 16384 bytes: 32x32x16 uint8.
@@ -379,7 +391,7 @@ voxref_bad_input(option.out_under_a_regular_file COMMAND "${plume_encode}|<DIR>/
 voxref_bad_input(option.out_in_an_unwritable_folder COMMAND "${plume_encode}|<DIR>/readonly/out.vxtv" UNWRITABLE "readonly"
   EXPECT "cannot write <DIR>/readonly/out\\.vxtv: [^\n]*Permission denied")
 voxref_bad_input(option.out_is_a_folder COMMAND "${plume_encode}|<DIR>/out.vxtv" MKDIRS "out.vxtv"
-  EXPECT "<DIR>/out\\.vxtv: Is a directory")
+  EXPECT "cannot write <DIR>/out\\.vxtv: it is a directory")
 voxref_bad_input(option.bounds_out_unwritable_leaves_no_stream MAKE "${mbi}|<GOOD>/volume.raw.gz|<DIR>/volume.raw.gz" NEEDS bi_volume_gz
   COMMAND "${voxref_bin}|encode|--codec|leb|--input|<DIR>/volume.raw.gz|--dims|32|32|16|--out|<DIR>/out.vxleb|--bounds-out|<DIR>/readonly/out.vxlbb"
   UNWRITABLE "readonly" EXPECT "cannot write <DIR>/readonly/out\\.vxlbb: [^\n]*Permission denied")
@@ -395,6 +407,17 @@ voxref_bad_input(option.conform_out_in_an_unwritable_folder COMMAND "${voxref_bi
   UNWRITABLE "readonly" EXPECT "cannot create directory <DIR>/readonly/report: Permission denied")
 voxref_bad_input(option.render_out_under_a_regular_file COMMAND "${voxref_bin}|render|--scene|sparsegrid.hard.level1|--out|<DIR>/file/out.exr" PRE "file"
   EXPECT "cannot write <DIR>/file/out\\.exr")
+# Options of `fixtures generate` refused when parsed, naming the option; nothing written.
+foreach(v nan inf -inf 1e309)
+  string(REPLACE "-" "minus_" entry "${v}")
+  voxref_bad_input(option.fixtures_isovalue_${entry} COMMAND "${voxref_bin}|fixtures|generate|--dir|<DIR>/fx|--scene|blobs_not_a_cube|--frames|1|--isovalue|${v}"
+    EXPECT "--isovalue: expected a finite number, got '${v}'")
+endforeach()
+foreach(n -3 0 100000)
+  string(REPLACE "-" "minus_" entry "${n}")
+  voxref_bad_input(option.fixtures_frames_${entry} COMMAND "${voxref_bin}|fixtures|generate|--dir|<DIR>/fx|--scene|blobs_not_a_cube|--frames|${n}"
+    EXPECT "--frames: Value ${n} not in range 1 to 10000")
+endforeach()
 voxref_bad_input(option.fixtures_dir_is_a_regular_file COMMAND "${voxref_bin}|fixtures|generate|--dir|<DIR>/fx|--scene|blobs_not_a_cube|--frames|1"
   PRE "fx" EXPECT "cannot create directory <DIR>/fx")
 # Resource limits on options: a plume larger than the container holds is refused before it is made.
@@ -402,3 +425,12 @@ voxref_bad_input(option.plume_side_beyond_the_container COMMAND "${voxref_bin}|e
   ULIMIT_V 1000000 EXPECT "--side 4096: expected a power of two in 8\\.\\.512")
 voxref_bad_input(option.plume_steps_beyond_the_container COMMAND "${voxref_bin}|encode|--codec|timevarying|--plume|--side|64|--steps|100000000|--out|<DIR>/out.vxtv"
   ULIMIT_V 1000000 EXPECT "--steps 100000000: expected 1\\.\\.65536")
+
+# Outputs that are not regular files (a device, a FIFO, a socket, a symbolic link) are never
+# replaced: written through, or refused (tests/cli/special_outputs.sh, docs/bad_input.md).
+foreach(kind character_device fifo socket symlink)
+  add_test(NAME badinput.output_not_a_regular_file.${kind}
+           COMMAND sh "${CMAKE_CURRENT_SOURCE_DIR}/cli/special_outputs.sh" ${kind} "${voxref_bin}" "${mbi}" "${good}/volume.vxleb" "${bi}/t/special_${kind}")
+  set_tests_properties(badinput.output_not_a_regular_file.${kind} PROPERTIES LABELS "badinput;cli;sanitize" TIMEOUT 120 FIXTURES_REQUIRED bi_leb
+                       SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:" FAIL_REGULAR_EXPRESSION "FAIL:")
+endforeach()

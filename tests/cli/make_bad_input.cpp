@@ -20,6 +20,11 @@
 //                        exceed the memory; a "gzip bomb")
 //   json:POINTER=JSON    parse the bytes as JSON, set the value at the JSON pointer, write back
 //   json-remove:POINTER  parse the bytes as JSON, remove the value at the JSON pointer
+//   socket               make OUT a Unix-domain socket (bound, then left behind) instead of a file
+//                        (make_bad_input - OUT socket); for outputs that are not regular files
+#include <sys/socket.h>
+#include <sys/un.h>
+#include <unistd.h>
 #include <zlib.h>
 
 #include <cstdint>
@@ -184,6 +189,17 @@ int main(int argc, char** argv) {
     std::ifstream in(argv[1], std::ios::binary);
     if (!in) die(std::string("cannot read ") + argv[1]);
     bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  if (argc == 4 && std::string(argv[3]) == "socket") {
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    const std::string path = argv[2];
+    if (path.size() >= sizeof addr.sun_path) die("socket path too long: " + path);
+    path.copy(addr.sun_path, path.size());
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    if (fd < 0 || ::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("cannot make a socket at " + path);
+    ::close(fd);
+    return 0;
   }
   for (int i = 3; i < argc; ++i) applyOp(bytes, argv[i]);
   std::ofstream out(argv[2], std::ios::binary | std::ios::trunc);

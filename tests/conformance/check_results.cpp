@@ -16,6 +16,12 @@
 // --expect-envelope-alone: the run names no profile and says it is judged by the envelope alone;
 //   no case ran the exact oracle, and every case's envelope oracle ran.
 // --expect-regressed ID / --expect-fixed ID: the "baseline" block lists the case so.
+// --require-failures-with-finding ID: every failed case carries the finding ID, and it changed
+//   samples there (a driver defect named as the reason of each failure).
+// --expect-environment NAME=VALUE: the run records the variable (driver.environment), and the
+//   index.html beside it shows it.
+// Always: every case that is not a pass states its reason (a non-empty message), and the
+// junit.xml beside the results has no failure or skip without a message.
 // Prints every violation; exits 1 if there is any, 2 on bad usage or an unreadable file.
 #include <filesystem>
 #include <fstream>
@@ -53,7 +59,7 @@ std::string fileBytes(const std::filesystem::path& p) {
 
 // A case without what may differ between equal runs.
 nlohmann::json stable(nlohmann::json c) {
-  for (const char* k : {"seconds_gl", "seconds_emulation", "seconds_reference", "stderr"}) c.erase(k);
+  for (const char* k : {"seconds_gl", "seconds_emulation", "seconds_reference", "timings", "stderr"}) c.erase(k);
   return c;
 }
 
@@ -75,8 +81,8 @@ int main(int argc, char** argv) {
   bool exactPass = false, noFail = false, explained = false;
   std::vector<std::string> findings;
   std::size_t minCases = 1;
-  std::map<std::string, std::string> expectStatus, expectStderr;
-  std::vector<std::string> expectRegressed, expectFixed;
+  std::map<std::string, std::string> expectStatus, expectStderr, expectEnvironment;
+  std::vector<std::string> expectRegressed, expectFixed, failuresWithFinding;
   bool expectInterrupted = false, envelopeAlone = false;
   std::string sameAs;
   for (int i = 2; i < argc; ++i) {
@@ -94,6 +100,8 @@ int main(int argc, char** argv) {
     else if (a == "--same-results-as" && i + 1 < argc) sameAs = argv[++i];
     else if (a == "--expect-regressed" && i + 1 < argc) expectRegressed.push_back(argv[++i]);
     else if (a == "--expect-fixed" && i + 1 < argc) expectFixed.push_back(argv[++i]);
+    else if (a == "--require-failures-with-finding" && i + 1 < argc) failuresWithFinding.push_back(argv[++i]);
+    else if (a == "--expect-environment" && i + 1 < argc) expectEnvironment.insert(splitAt(argv[++i]));
     else {
       std::cerr << "check_results: unknown option " << a << "\n";
       return 2;
@@ -130,6 +138,13 @@ int main(int argc, char** argv) {
       }
       continue;
     }
+    if (status != "pass" && c.value("message", "").empty()) violation(id + " is " + status + " and states no reason (empty message)");
+    for (const std::string& want : failuresWithFinding) {
+      if (status != "fail") continue;
+      bool carried = false;
+      for (const auto& f : c["findings"]) carried |= f["id"] == want && f["figures"].value("samples_changed", 0) > 0;
+      if (!carried) violation(id + " fails without the finding " + want + ": " + c.value("message", ""));
+    }
     if (status == "crash") violation(id + " crashed: " + c["message"].get<std::string>());
     const auto& oracles = c["oracles"];
     if (exactPass && oracles.contains("exact") && oracles["exact"]["verdict"] != "not_run") {
@@ -147,6 +162,16 @@ int main(int argc, char** argv) {
     }
   }
   if (exactPass && exactRan == 0) violation("no case ran the exact oracle");
+  for (const auto& [key, value] : expectEnvironment) {
+    const auto& env = r["driver"]["environment"];
+    if (!env.contains(key) || env[key] != value) violation("driver.environment does not record " + key + "=" + value + ": " + env.dump());
+    const std::string index = fileBytes(std::filesystem::path(argv[1]).parent_path() / "index.html");
+    if (index.find(key) == std::string::npos || index.find(value) == std::string::npos) violation("index.html does not show " + key + "=" + value);
+  }
+  if (const std::filesystem::path junit = std::filesystem::path(argv[1]).parent_path() / "junit.xml"; std::filesystem::exists(junit)) {
+    const std::string xml = fileBytes(junit);
+    if (xml.find("message=\"\"") != std::string::npos) violation("junit.xml has message=\"\": a case without its reason");
+  }
   for (const std::string& want : findings) {
     bool seen = false;
     for (const auto& c : cases)

@@ -4,7 +4,7 @@
 # iso.frames.buckyball) runs four ways; check_results --same-results-as compares every case field
 # but times and stderr, and every image file byte for byte, with the --threads 2 run.
 # Included from tests/CMakeLists.txt (voxref_expect, voxref_bin, test_out).
-set(det_filter "sparsegrid.combination.rgba8.l5.*,sparsegrid.combination.rgba16f.l6.xray,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres,timevarying.composite.*,iso.frames.buckyball,iso.hard.*")
+set(det_filter "sparsegrid.combination.rgba8.l5.*,sparsegrid.combination.rgba16f.l6.xray,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres,timevarying.composite.*,iso.frames.buckyball,iso.hard.*,iso.accuracy.*")
 set(det_check "$<TARGET_FILE:check_results>")
 voxref_expect(determinism.threads2
   COMMAND "${voxref_bin}|conform|--filter|${det_filter}|--threads|2|--jobs|2|--all-images|--out|${test_out}/det-threads2"

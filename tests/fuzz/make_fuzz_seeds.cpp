@@ -88,7 +88,6 @@ void timevarying() {
     o.alphaOne = s.alphaOne;
     io::TimeVaryingFile f;
     f.transfer = ref::transferFunction(s.transfer);
-    f.alphaOne = s.alphaOne;
     f.textures = ref::encodeTimeVarying(s.series, f.transfer, o);
     const std::string bytes = io::serializeTimeVarying(f);
     (void)io::parseTimeVarying(bytes, s.name);

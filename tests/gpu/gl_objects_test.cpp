@@ -8,6 +8,7 @@
 
 #include "gpu/context.h"
 #include "gpu/gl_error.h"
+#include "gpu/iso_gl.h"
 
 namespace voxref::gpu {
 namespace {
@@ -74,6 +75,18 @@ TEST(GlContext, UnknownEglPlatformIsAClearError) {
 TEST(GlContext, DriverNames) {
   EXPECT_EQ(parseDriver("softpipe"), Driver::Softpipe);
   EXPECT_FALSE(parseDriver("vulkan").has_value());
+}
+
+// gl_PrimitiveID without a geometry shader (GL 4.6 section 15.2.2): the first triangle of the draw
+// is primitive 0, so the mesh program writes id 1 on every pixel of a covering triangle, as the
+// control with the constant id does.
+TEST_F(GlObjects, PrimitiveIdReachesTheFragmentsOnLlvmpipe) {
+  const PrimitiveIdCheck c = checkPrimitiveIdGl(*context_);
+  EXPECT_EQ(c.pixels, 256u);
+  EXPECT_EQ(c.drawnWithId, 256u);
+  EXPECT_EQ(c.rightIds, 256u);
+  EXPECT_EQ(c.drawnByControl, 256u);
+  EXPECT_FALSE(c.driverDropsPrimitiveIdDraws());
 }
 
 }  // namespace

@@ -26,6 +26,8 @@ bool isPow2(std::uint64_t v) { return v && (v & (v - 1)) == 0; }
 std::string serializeTimeVarying(const TimeVaryingFile& f) {
   const ref::TimeVaryingTextures& t = f.textures;
   const ref::TimeVaryingLayout& L = t.layout;
+  if (L.timeSteps < 1 || L.timeSteps > 65536)
+    throw std::invalid_argument(std::to_string(L.timeSteps) + " time steps: the .vxtv container holds 1..65536 (FORMAT.md, time_steps)");
   ref::ByteWriter w;
   w.bytes("VXTV", 4);
   w.le<std::uint16_t>(1);
@@ -33,7 +35,7 @@ std::string serializeTimeVarying(const TimeVaryingFile& f) {
   for (int v : {L.side, L.timeSteps, L.level, L.cells, L.blockSide, L.indexSlots, L.blockSlots, L.original[0], L.original[1], L.original[2]})
     w.le<std::uint32_t>(static_cast<std::uint32_t>(v));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(t.index.encoding));
-  w.le<std::uint8_t>(f.alphaOne == ref::AlphaOnePolicy::Paper ? 0 : 1);
+  w.le<std::uint8_t>(t.alphaOne == ref::AlphaOnePolicy::Paper ? 0 : 1);
   w.le<std::uint16_t>(0);
   w.le<std::uint32_t>(static_cast<std::uint32_t>(t.stats.distinctBlocks));
   for (std::size_t v : {t.stats.homogeneousCells, t.stats.refinedCells, t.stats.hashHits, t.stats.hashCollisions, t.stats.alphaOneCells})
@@ -89,7 +91,7 @@ TimeVaryingFile parse(std::string_view b) {
     r.fail(32, "block_slots: block_rgba8 addresses at most 256 slots per axis");
   const auto policy = r.le<std::uint8_t>("alpha_one_policy");
   if (policy > 1) r.fail(encodingAt + 1, "alpha_one_policy: expected 0 or 1, got " + std::to_string(policy));
-  f.alphaOne = policy == 0 ? ref::AlphaOnePolicy::Paper : ref::AlphaOnePolicy::Refine;
+  f.textures.alphaOne = policy == 0 ? ref::AlphaOnePolicy::Paper : ref::AlphaOnePolicy::Refine;
   if (r.le<std::uint16_t>("reserved") != 0) r.fail(encodingAt + 2, "reserved: expected 0");
   const std::uint64_t blockCapacity = static_cast<std::uint64_t>(L.blockSlots) * L.blockSlots * L.blockSlots;
   const std::size_t distinctAt = r.offset();
@@ -143,7 +145,8 @@ TimeVaryingFile parse(std::string_view b) {
   const std::string_view rb = r.take(static_cast<std::size_t>(refBytes), "refinement texture");
   ref.texels.assign(rb.begin(), rb.end());
 
-  // Every refinement address must name one of the stored blocks.
+  // Every refinement address must name one of the stored blocks; under the paper's policy a
+  // flagged texel may be a colour, which the decoder reads as an address (FORMAT.md section 3).
   for (std::size_t texel = 0; texel < index.texels.size() / 4; ++texel) {
     const std::uint32_t* t = &index.texels[4 * texel];
     if (!ref::isRefinementFlag(index.encoding, t)) continue;
@@ -152,6 +155,7 @@ TimeVaryingFile parse(std::string_view b) {
         const float v = std::bit_cast<float>(t[a]);
         if (!(v >= 0.0f && v <= 1.0f)) r.fail(indexAt + texel * 4 * cb, "index texel " + std::to_string(texel) + ": address is not a number in [0, 1]");
       }
+    if (f.textures.alphaOne == ref::AlphaOnePolicy::Paper) continue;
     const auto k = ref::blockOfIndexTexel(L, index.encoding, t);
     const std::uint64_t slot = static_cast<std::uint64_t>(k[0]) + static_cast<std::uint64_t>(L.blockSlots) * (k[1] + static_cast<std::uint64_t>(L.blockSlots) * k[2]);
     if (k[0] >= L.blockSlots || k[1] >= L.blockSlots || k[2] >= L.blockSlots || slot >= distinct)

@@ -25,9 +25,10 @@ namespace voxref::io {
 struct TimeVaryingFile {
   ref::TimeVaryingTextures textures;
   ref::TransferFunction transfer;
-  ref::AlphaOnePolicy alphaOne = ref::AlphaOnePolicy::Refine;
 };
 
+// The container's bytes. Throws std::invalid_argument when the textures exceed what the format
+// holds (FORMAT.md section 1: time_steps 1..65536, ...): voxref never writes a file it cannot read.
 std::string serializeTimeVarying(const TimeVaryingFile& file);
 TimeVaryingFile parseTimeVarying(std::string_view bytes, const std::string& sourceName);
 

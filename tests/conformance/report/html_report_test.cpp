@@ -192,5 +192,19 @@ TEST(HtmlReport, WritesIndexAndCasePages) {
   std::filesystem::remove_all(dir);
 }
 
+// Without a profile nothing modelled the driver's departures: the index says they are unknown, never
+// that there are none. With one, it names what the profile models.
+TEST(HtmlIndex, DeparturesAreUnknownWithoutAProfile) {
+  RunInfo noProfile = run(true);
+  noProfile.driver["profile"] = {{"name", nullptr}, {"chosen", "named on the command line: envelope"}};
+  const std::string page = htmlIndex(noProfile, {result("a.b", "sparsegrid", Status::Pass)});
+  EXPECT_TRUE(has(page, "Unknown: this run used no precision profile")) << page;
+  EXPECT_FALSE(has(page, "models no departure"));
+  RunInfo softpipe = run(true);
+  softpipe.driver["profile"] = {{"name", "softpipe"}};
+  EXPECT_TRUE(has(htmlIndex(softpipe, {result("a.b", "sparsegrid", Status::Pass)}), "softpipe.texture.tile_cache_aliasing"));
+  EXPECT_TRUE(has(htmlIndex(run(true), {result("a.b", "sparsegrid", Status::Pass)}), "None: the profile llvmpipe models no departure"));
+}
+
 }  // namespace
 }  // namespace voxref::conf

@@ -248,6 +248,22 @@ TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheGrid) {
   EXPECT_EQ(d.data.data().size(), 65u);
 }
 
+// The encoder's bound, from the extents alone: the covering grid of the largest channel (data: 1
+// component, gradients: 3, in 8^3 bricks of 2-byte values) dominates for a thin volume, whatever
+// its few samples; the coded values and pages add at most 4 bytes per value and 64 per page.
+TEST(LebEncodeMemory, TheBoundFollowsTheCoveringGridOfTheLargestChannel) {
+  LebEncodeOptions dataOnly;
+  dataOnly.gradients = false;
+  const std::uint64_t grid1025 = 129ull * 129 * 129 * 512 * 2;  // (1025 + 7) / 8 = 129 bricks per axis
+  const std::uint64_t pages1025 = (1025ull * 1025 * 1025 + 4095) / 4096;
+  EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025);
+  EXPECT_LE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025 + 8 * 1025 + 2 * 64 * pages1025);
+  EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}), 3 * grid1025 + 3 * 1025);  // the gradients' grid and the gradients
+  EXPECT_LT(lebEncodeMemoryBytes({9, 9, 9}), std::uint64_t{1} << 20);     // a 9^3 grid: two bricks per axis
+  EXPECT_THROW(lebEncodeMemoryBytes({9, 9, 9}, LebEncodeOptions{30, true, 0}), std::invalid_argument);  // page bits
+  EXPECT_THROW(lebEncodeMemoryBytes({0, 9, 9}), std::invalid_argument);
+}
+
 TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {
   // A 5x1x1 constant volume (grid 5^3) whose header then claims 5x5x5: 125 deltas cannot fit in
   // the few bytes of payload, whatever the code.
