@@ -13,11 +13,30 @@ function(voxref_exact_arithmetic target)
   target_compile_options(${target} PRIVATE -ffp-contract=off -fno-fast-math)
 endfunction()
 
-# A static library of one layer. Sources are listed by the caller; headers live beside them and
-# are included by their path from the repository root ("reference/sparsegrid/combination.h").
+# The include folder of a target: <build>/include/<target>/ holds one link, <FOLDER> (a path from
+# the repository root, "reference" or "conformance/framework"), to that folder of the sources.
+# Headers are included by their path from the repository root ("reference/common/volume.h"), and
+# a target sees the headers of its own folder and of what it links, nothing else: an include of a
+# layer it may not use fails to compile (docs/design.md, "Layers"; tests/layering).
+function(voxref_include_folder target scope folder)
+  set(root "${PROJECT_BINARY_DIR}/include/${target}")
+  get_filename_component(parent "${root}/${folder}" DIRECTORY)
+  file(MAKE_DIRECTORY "${parent}")
+  if(NOT IS_SYMLINK "${root}/${folder}")
+    file(CREATE_LINK "${PROJECT_SOURCE_DIR}/${folder}" "${root}/${folder}" SYMBOLIC)
+  endif()
+  target_include_directories(${target} ${scope} "${root}")
+endfunction()
+
+# A static library of one folder: voxref_library(target FOLDER <path from the root> SOURCES ...).
+# Sources are listed by the caller; headers live beside them.
 function(voxref_library target)
-  add_library(${target} STATIC ${ARGN})
-  target_include_directories(${target} PUBLIC "${PROJECT_SOURCE_DIR}")
+  cmake_parse_arguments(ARG "" "FOLDER" "SOURCES" ${ARGN})
+  if(NOT ARG_FOLDER OR NOT ARG_SOURCES)
+    message(FATAL_ERROR "voxref_library(${target} FOLDER <folder> SOURCES ...)")
+  endif()
+  add_library(${target} STATIC ${ARG_SOURCES})
+  voxref_include_folder(${target} PUBLIC "${ARG_FOLDER}")
   voxref_warnings(${target})
 endfunction()
 

@@ -1,7 +1,7 @@
 // What a precision profile gives for the probe frames of `voxref probe`
 // (reference/common/probe_frames.h): the frames GL would read back if the driver computed exactly
 // what the profile models. Bit-exact to the profile's models (texture_sampler_emu.h for the
-// sweeps, framebuffer_emu.h for the writes). conformance/probe/ infers a fingerprint from these
+// sweeps, framebuffer_emu.h for the writes). conformance/framework/probe/ infers a fingerprint from these
 // the same way it does from the GL frames, which makes every known profile's expected fingerprint
 // a derivation rather than a table.
 #pragma once

@@ -1,5 +1,5 @@
 // The probe frames of `voxref probe` (reference/common/probe_frames.h) drawn on a real GL context
-// and read back bit for bit: the input of driver fingerprinting (conformance/probe/).
+// and read back bit for bit: the input of driver fingerprinting (conformance/framework/probe/).
 #pragma once
 
 #include <vector>

@@ -1,3 +1,4 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/bench.h"
 
 #include <sys/resource.h>
@@ -17,10 +18,10 @@
 #include "conformance/bench/sparsegrid_bench.h"
 #include "conformance/bench/study.h"
 #include "conformance/bench/timevarying_bench.h"
-#include "conformance/catalog.h"
-#include "conformance/driver_info.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/framework/driver_info.h"
 #include "conformance/io/atomic_file.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 #include "reference/common/parallel.h"
 
 namespace voxref::conf {

@@ -1,7 +1,7 @@
 #include "conformance/bench/bench_html.h"
 
-#include "conformance/report/html_escape.h"
-#include "conformance/report/html_page.h"
+#include "conformance/framework/report/html_escape.h"
+#include "conformance/framework/report/html_page.h"
 
 namespace voxref::conf {
 namespace {

@@ -1,3 +1,4 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/iso_bench.h"
 
 #include <algorithm>
@@ -5,10 +6,10 @@
 #include <memory>
 
 #include "conformance/bench/study.h"
-#include "conformance/catalog.h"
-#include "conformance/iso/surface_accuracy.h"
-#include "conformance/progress.h"
-#include "conformance/iso/iso_session.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/modules/iso/surface_accuracy.h"
+#include "conformance/framework/progress.h"
+#include "conformance/modules/iso/iso_session.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
 #include "reference/common/parallel.h"
@@ -101,7 +102,7 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
             std::to_string(scenes.front().budget.maxSplits) +
             " splits per frame). Frame time = occlusion queries + refinement + extraction from the compressed stream + GL drawing (llvmpipe), "
             "not the Embree ground truth. 'paper + verification' also tests the culled boxes against the frame just extracted and "
-            "refines again where a cull shows (conformance/iso/iso_session.h). False culls: culled diamonds that the Embree item buffer of the same frame shows visible. "
+            "refines again where a cull shows (conformance/modules/iso/iso_session.h). False culls: culled diamonds that the Embree item buffer of the same frame shows visible. "
             "The paper (2004 GPU, 2.6:1 compressed engine) reports triangles and diamonds with and without culling; its absolute times are not comparable.";
   return t;
 }

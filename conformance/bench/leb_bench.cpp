@@ -1,3 +1,4 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/leb_bench.h"
 
 #include <chrono>
@@ -7,9 +8,9 @@
 
 #include "conformance/bench/baselines.h"
 #include "conformance/bench/study.h"
-#include "conformance/catalog.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/io/raw_volume.h"
-#include "conformance/progress.h"
+#include "conformance/framework/progress.h"
 #include "reference/common/fields.h"
 #include "reference/common/parallel.h"
 #include "reference/leb/gradients.h"

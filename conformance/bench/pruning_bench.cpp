@@ -1,13 +1,14 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/pruning_bench.h"
 
 #include <cstring>
 #include <set>
 #include <tuple>
 
-#include "conformance/catalog.h"
-#include "conformance/sparsegrid/prepared_scene.h"
-#include "conformance/sparsegrid/sparsegrid_scene.h"
-#include "conformance/timevarying/timevarying_scene.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/modules/sparsegrid/prepared_scene.h"
+#include "conformance/modules/sparsegrid/sparsegrid_scene.h"
+#include "conformance/modules/timevarying/timevarying_scene.h"
 #include "emulation/combination_emu.h"
 #include "emulation/timevarying_emu.h"
 #include "reference/common/parallel.h"

@@ -1,3 +1,4 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/sparsegrid_bench.h"
 
 #include <algorithm>
@@ -5,11 +6,11 @@
 #include <cmath>
 
 #include "conformance/bench/study.h"
-#include "conformance/catalog.h"
-#include "conformance/compare.h"
-#include "conformance/progress.h"
-#include "conformance/sparsegrid/prepared_scene.h"
-#include "conformance/sparsegrid/sparsegrid_catalog.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/framework/compare.h"
+#include "conformance/framework/progress.h"
+#include "conformance/modules/sparsegrid/prepared_scene.h"
+#include "conformance/modules/sparsegrid/sparsegrid_catalog.h"
 #include "emulation/combination_emu.h"
 #include "gpu/combination_gl.h"
 #include "gpu/gl_error.h"

@@ -1,3 +1,4 @@
+#include "conformance/framework/selection.h"
 #include "conformance/bench/timevarying_bench.h"
 
 #include <chrono>
@@ -8,9 +9,9 @@
 
 #include "conformance/bench/baselines.h"
 #include "conformance/bench/study.h"
-#include "conformance/catalog.h"
-#include "conformance/progress.h"
-#include "conformance/timevarying/fetch_classification.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/framework/progress.h"
+#include "conformance/modules/timevarying/fetch_classification.h"
 #include "emulation/timevarying_emu.h"
 #include "gpu/gl_error.h"
 #include "gpu/timevarying_gl.h"

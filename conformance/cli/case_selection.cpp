@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "conformance/catalog.h"
-#include "conformance/controls/runner_controls.h"
-#include "conformance/runner.h"
+#include "conformance/modules/catalog.h"
+#include "conformance/framework/controls/runner_controls.h"
+#include "conformance/framework/runner.h"
 
 namespace voxref::cli {
 

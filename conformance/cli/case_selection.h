@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "conformance/case.h"
-#include "conformance/shard.h"
+#include "conformance/framework/case.h"
+#include "conformance/framework/shard.h"
 
 namespace voxref::cli {
 

@@ -2,7 +2,7 @@
 
 #include "conformance/bench/bench.h"
 #include "conformance/cli/commands.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 
 namespace voxref::cli {
 

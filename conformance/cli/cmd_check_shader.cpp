@@ -3,15 +3,15 @@
 #include <cstdio>
 #include <iostream>
 
-#include "conformance/case_context.h"
-#include "conformance/catalog.h"
+#include "conformance/framework/case_context.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/cli/commands.h"
-#include "conformance/driver_info.h"
+#include "conformance/framework/driver_info.h"
 #include "conformance/io/atomic_file.h"
-#include "conformance/report/report_files.h"
-#include "conformance/runner.h"
-#include "conformance/sparsegrid/sparsegrid_scene.h"
-#include "conformance/timevarying/timevarying_scene.h"
+#include "conformance/framework/report/report_files.h"
+#include "conformance/framework/runner.h"
+#include "conformance/modules/sparsegrid/sparsegrid_scene.h"
+#include "conformance/modules/timevarying/timevarying_scene.h"
 #include "gpu/gl_error.h"
 #include "gpu/shader_override.h"
 

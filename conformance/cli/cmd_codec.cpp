@@ -1,6 +1,6 @@
 // voxref encode | decode | info --codec NAME: the codecs on the user's own volumes.
 #include "conformance/cli/codecs.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 
 namespace voxref::cli {
 namespace {

@@ -2,7 +2,7 @@
 
 #include "conformance/cli/case_selection.h"
 #include "conformance/cli/commands.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 #include "gpu/gl_error.h"
 
 namespace voxref::cli {

@@ -1,11 +1,11 @@
 // voxref fixtures generate | verify: the Embree ground truth of the isosurface system
-// (conformance/iso/iso_fixtures.h) for the built-in scenes or the user's own volume.
+// (conformance/modules/iso/iso_fixtures.h) for the built-in scenes or the user's own volume.
 #include <algorithm>
 #include <iostream>
 
 #include "conformance/cli/commands.h"
-#include "conformance/iso/iso_fixtures.h"
-#include "conformance/runner.h"
+#include "conformance/modules/iso/iso_fixtures.h"
+#include "conformance/framework/runner.h"
 
 namespace voxref::cli {
 namespace {

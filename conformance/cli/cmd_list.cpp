@@ -1,9 +1,10 @@
 #include <iostream>
 
-#include "conformance/catalog.h"
+#include "conformance/framework/selection.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/cli/case_selection.h"
 #include "conformance/cli/commands.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 
 namespace voxref::cli {
 

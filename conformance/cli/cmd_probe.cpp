@@ -3,11 +3,11 @@
 #include <iostream>
 
 #include "conformance/cli/commands.h"
-#include "conformance/driver_info.h"
+#include "conformance/framework/driver_info.h"
 #include "conformance/io/atomic_file.h"
-#include "conformance/probe/driver_fingerprint.h"
-#include "conformance/probe/fingerprint_match.h"
-#include "conformance/runner.h"
+#include "conformance/framework/probe/driver_fingerprint.h"
+#include "conformance/framework/probe/fingerprint_match.h"
+#include "conformance/framework/runner.h"
 #include "gpu/gl_error.h"
 #include "gpu/probe_gl.h"
 

@@ -1,16 +1,16 @@
 #include <fstream>
 #include <iostream>
 
-#include "conformance/catalog.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/cli/commands.h"
-#include "conformance/driver_info.h"
+#include "conformance/framework/driver_info.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/image_io.h"
-#include "conformance/progress.h"
-#include "conformance/runner.h"
-#include "conformance/sparsegrid/prepared_scene.h"
-#include "conformance/timevarying/fetch_classification.h"
-#include "conformance/timevarying/timevarying_scene.h"
+#include "conformance/framework/progress.h"
+#include "conformance/framework/runner.h"
+#include "conformance/modules/sparsegrid/prepared_scene.h"
+#include "reference/timevarying/exact_colours.h"
+#include "conformance/modules/timevarying/timevarying_scene.h"
 #include "emulation/timevarying_emu.h"
 #include "gpu/timevarying_gl.h"
 #include "emulation/combination_emu.h"
@@ -50,16 +50,10 @@ int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scen
                                                 {"voxref.step", std::to_string(step)}};
   std::vector<std::array<double, 4>> rgba(static_cast<std::size_t>(frame.width) * frame.height, {0, 0, 0, 0});
   if (o.backend == "reference") {
-    // The input's colours (floor(p * side)) composited back to front in real arithmetic.
-    for (int k = frame.planes - 1; k >= 0; --k)
-      for (int j = 0; j < frame.height; ++j)
-        for (int i = 0; i < frame.width; ++i) {
-          const glm::dvec3 p = frame.sample(i, j, k);
-          if (p.x < 0 || p.y < 0 || p.z < 0 || p.x > 1 || p.y > 1 || p.z > 1) continue;
-          const ref::Rgba8 c = conf::inputColour(series, tf, step, p);
-          auto& d = rgba[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j];
-          for (int ch = 0; ch < 4; ++ch) d[ch] = c[ch] / 255.0 * (c[3] / 255.0) + d[ch] * (1.0 - c[3] / 255.0);
-        }
+    // The input's colours composited back to front in real arithmetic (reference/timevarying/exact_colours.h).
+    rgba = ref::idealComposite(ref::exactColours(series, tf, step, frame), frame);
+    for (auto& px : rgba)
+      for (double& v : px) v /= 255.0;
   } else {
     ref::RgbaStack image;
     if (o.backend == "emulation") {

@@ -11,10 +11,11 @@
 #include <optional>
 
 #include "conformance/cli/codecs.h"
+#include "conformance/framework/stopwatch.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/leb_file.h"
 #include "conformance/io/raw_volume.h"
-#include "conformance/runner.h"
+#include "conformance/framework/runner.h"
 #include "reference/common/byte_stream.h"
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/grid_field.h"
@@ -23,9 +24,6 @@
 namespace voxref::cli {
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // The bytes this process may still map under its address-space limit (ulimit -v, RLIMIT_AS), or
 // nothing when it has none.
@@ -112,7 +110,7 @@ int encodeLebCommand(const EncodeOptions& o) {
     bits = 16;
   }
   std::string stream;
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto t0 = conf::Clock::now();
   try {
     stream = ref::encodeLeb(volume, bits, options);
   } catch (const std::invalid_argument& e) {
@@ -120,7 +118,7 @@ int encodeLebCommand(const EncodeOptions& o) {
   } catch (const std::bad_alloc&) {
     throw io::IoError(needText + ": out of memory");
   }
-  const double seconds = secondsSince(t0);
+  const double seconds = conf::secondsSince(t0);
   // The stream and its bounds are written together: a failure leaves neither.
   std::string bounds;
   if (!o.boundsOut.empty()) {

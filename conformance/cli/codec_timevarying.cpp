@@ -5,9 +5,9 @@
 #include "conformance/cli/codecs.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/raw_volume.h"
-#include "conformance/io/timevarying/container.h"
-#include "conformance/progress.h"
-#include "conformance/runner.h"
+#include "conformance/io/timevarying_file.h"
+#include "conformance/framework/progress.h"
+#include "conformance/framework/runner.h"
 #include "reference/timevarying/plume.h"
 
 namespace voxref::cli {
@@ -46,7 +46,7 @@ ref::TimeSeries loadSeries(const EncodeOptions& o) {
   }
 }
 
-void printInfo(const io::TimeVaryingFile& f, std::ostream& out) {
+void printInfo(const ref::TimeVaryingFile& f, std::ostream& out) {
   const ref::TimeVaryingLayout& L = f.textures.layout;
   const ref::EncodeStats& s = f.textures.stats;
   const ref::Dims3 cube{L.side, L.side, L.side};
@@ -73,7 +73,7 @@ void printInfo(const io::TimeVaryingFile& f, std::ostream& out) {
 int encodeTimeVaryingCommand(const EncodeOptions& o) {
   if (o.out.extension() != ".vxtv") throw conf::UsageError("--out must name a .vxtv file, got " + o.out.string());
   const ref::TimeSeries series = loadSeries(o);
-  io::TimeVaryingFile f;
+  ref::TimeVaryingFile f;
   try {
     f.transfer = ref::transferFunction(o.transfer);
   } catch (const std::invalid_argument& e) {
@@ -106,7 +106,7 @@ int encodeTimeVaryingCommand(const EncodeOptions& o) {
 }
 
 int decodeTimeVaryingCommand(const DecodeOptions& o) {
-  const io::TimeVaryingFile f = io::readTimeVarying(o.input);
+  const ref::TimeVaryingFile f = io::readTimeVarying(o.input);
   const int steps = f.textures.layout.timeSteps;
   if (o.step && (*o.step < 0 || *o.step >= steps))
     throw conf::UsageError("--step " + std::to_string(*o.step) + " is outside 0.." + std::to_string(steps - 1) + " (the time steps of " + o.input.string() + ")");

@@ -7,7 +7,7 @@
 #include <iostream>
 
 #include "conformance/cli/commands.h"
-#include "conformance/iso/iso_scene.h"
+#include "conformance/modules/iso/iso_scene.h"
 
 namespace {
 

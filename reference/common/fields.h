@@ -36,7 +36,7 @@ struct Field {
 //   figure9           the clamping counterexample of Teitzel et al. Fig. 9 lifted to 3D: 0 at
 //                     (1/4,1/2,1/2), (1/2,1/4,1/2), (1/2,1/2,1/4), 0.8 everywhere else; sampled
 //                     on a level-2 sparse grid, no order of unscaled blend passes evaluates it
-//                     correctly (conformance/sparsegrid/figure9_conf.cpp)
+//                     correctly (conformance/modules/sparsegrid/figure9_conf.cpp)
 //   gaussian_buckyball 60 Gaussian atoms (sigma 0.03) at the vertices of a truncated icosahedron
 //                     of radius 0.35 around the centre: a synthetic C60, like the buckyball of
 //                     Gregorski et al. 2004 ("a synthetic dataset made from Gaussian functions")

@@ -1,7 +1,7 @@
 // The probe frames of `voxref probe` (docs/probe.md): what each frame draws, as plain data shared
 // by gpu/ (which draws them, gpu/probe_gl.h), emulation/ (which computes what a precision profile
 // gives for them, emulation/probe_emu.h) and conformance/ (which infers a driver's arithmetic from
-// the read-back bits, conformance/probe/driver_fingerprint.h).
+// the read-back bits, conformance/framework/probe/driver_fingerprint.h).
 //
 // Two kinds of frame, each a full-screen pass (or two) into a small RGBA target:
 //   sweep  texture(tex, (u_k, 0.5, 0.5)) of a LINEAR texture `texels` wide and one texel high and

@@ -163,7 +163,7 @@ VoxelAddress addressOfVoxel(const TimeVaryingTextures& textures, int t, int x, i
 // decoder reads it (the flag collision of section 5.1): where that address lies past the
 // refinement texture, the last texel on that axis is read (CLAMP_TO_EDGE, the wrap of every
 // decoder; GL 4.6 section 8.14.2), and a block slot that holds no block reads as stored (zero).
-// So every file the encoder writes decodes (conformance/io/timevarying/FORMAT.md).
+// So every file the encoder writes decodes (reference/timevarying/FORMAT.md).
 // Throws std::out_of_range for coordinates outside the series, or for an address outside the
 // textures under the refine policy (a corrupt texture).
 Rgba8 decodeVoxel(const TimeVaryingTextures& textures, int t, int x, int y, int z);

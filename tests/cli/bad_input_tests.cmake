@@ -258,7 +258,7 @@ voxref_bad_input(raw.dims_claim_a_terabyte MAKE "${raw_make}" COMMAND "${tv_enco
 voxref_bad_input(gz.expands_beyond_the_dims MAKE "${mbi}|<GOOD>/bomb.raw.gz|<DIR>/bomb.raw.gz" COMMAND "${leb_encode}|<DIR>/bomb.raw.gz|--dims|32|32|16"
   ULIMIT_V 1000000 NEEDS bi_bomb EXPECT "volume file <DIR>/bomb\\.raw\\.gz holds more than 16384 bytes; the dimensions need 16384")
 
-# --- Scene JSON of the sparse-grid system (conformance/sparsegrid/SCENE.md) through `voxref render`.
+# --- Scene JSON of the sparse-grid system (conformance/modules/sparsegrid/SCENE.md) through `voxref render`.
 set(sg_make "${mbi}|${bi}/scenes/sparsegrid.json|<DIR>/bad.json")
 set(render_run "${voxref_bin}|render|--scene|<DIR>/bad.json|--out|<DIR>/out.exr")
 voxref_bad_input(scene_sparsegrid.empty MAKE "${sg_make}|truncate:0" COMMAND "${render_run}" NEEDS bi_scene_sparsegrid
@@ -293,7 +293,7 @@ voxref_bad_input(scene_sparsegrid.volume_dims_65535_cubed MAKE "${sg_make}|json:
   ULIMIT_V 1000000 NEEDS bi_scene_sparsegrid
   EXPECT "scene <DIR>/bad\\.json: data\\.volume: volume file [^\n]*step_000\\.rgba: the dimensions are out of range: volume of 65535x65535x65535 samples exceeds")
 
-# --- Scene JSON of the time-varying system (conformance/timevarying/timevarying_scene.h).
+# --- Scene JSON of the time-varying system (conformance/modules/timevarying/timevarying_scene.h).
 set(tvs_make "${mbi}|${bi}/scenes/timevarying.json|<DIR>/bad.json")
 voxref_bad_input(scene_timevarying.side_not_a_power_of_two MAKE "${tvs_make}|json:/side=12" COMMAND "${render_run}" NEEDS bi_scene_timevarying
   EXPECT "scene <DIR>/bad\\.json: side: expected a power of two")
@@ -308,7 +308,7 @@ voxref_bad_input(scene_timevarying.data_not_known MAKE "${tvs_make}|json:/data=\
 voxref_bad_input(scene_timevarying.only_steps_out_of_range MAKE "${tvs_make}|json:/only_steps=[5]" COMMAND "${render_run}" NEEDS bi_scene_timevarying
   EXPECT "scene <DIR>/bad\\.json: only_steps: 5 is outside 0\\.\\.1")
 
-# --- The fixture manifest and the isosurface scenes in it (conformance/iso/iso_fixtures.h,
+# --- The fixture manifest and the isosurface scenes in it (conformance/modules/iso/iso_fixtures.h,
 # iso_scene.h) through `voxref fixtures verify`; its scratch folder goes to TMPDIR=<DIR>/tmp, which
 # must be empty again afterwards.
 set(fx_make "${mbi}|<GOOD>/fx/manifest.json|<DIR>/fx/manifest.json")
@@ -342,7 +342,7 @@ bi_manifest(scene_iso.field_of_view_out_of_range MAKE "${fx_make}|json:/scenes/0
 bi_manifest(scene_iso.volume_file_missing MAKE "${fx_make}|json:/scenes/0/volume_file=\"<DIR>/none.raw\""
   EXPECT "<DIR>/fx/manifest\\.json: [^\n]*volume file <DIR>/none\\.raw does not exist")
 
-# --- A baseline results.json (conformance/report/results_reader.h) through `voxref conform
+# --- A baseline results.json (conformance/framework/report/results_reader.h) through `voxref conform
 # --baseline`: the report folder, which holds an earlier results.json, must be left as it was.
 set(rs_make "${mbi}|<GOOD>/report/results.json|<DIR>/bad.json")
 set(rs_run "${voxref_bin}|conform|--filter|sparsegrid.hard.level1|--out|<DIR>/report|--baseline|<DIR>/bad.json")

@@ -149,7 +149,7 @@ TEST(IntervalArithmetic, UnormConversionsAllowMesasReciprocalAndEitherCode) {
   EXPECT_EQ(clamped.hi, 255);
 }
 
-// The frames of the built-in cases (conformance/timevarying/timevarying_scene.cpp), at `side`.
+// The frames of the built-in cases (conformance/modules/timevarying/timevarying_scene.cpp), at `side`.
 std::vector<ref::PlaneFrame> builtInFrames(int side, int blockSide, int cells) {
   const double h = 1.0 / side, b = h * blockSide;
   return {ref::explicitFrame({0, 0, 0}, {h, 0, 0}, {0, h, 0}, {0, 0, h}, side, side, side),

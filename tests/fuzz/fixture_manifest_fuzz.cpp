@@ -1,4 +1,4 @@
-// libFuzzer target: the manifest.json of the isosurface fixtures (conformance/iso/iso_manifest.h),
+// libFuzzer target: the manifest.json of the isosurface fixtures (conformance/modules/iso/iso_manifest.h),
 // the file `voxref fixtures verify DIR` reads before it regenerates every fixture from the
 // manifest's scene parameters. The regeneration itself (Embree ray casting, EXR files) is not
 // fuzzed: it is not a parser, and it is what the parser's checks protect; the cheap parts of it
@@ -27,7 +27,7 @@
 #include <string_view>
 
 #include "conformance/io/atomic_file.h"
-#include "conformance/iso/iso_manifest.h"
+#include "conformance/modules/iso/iso_manifest.h"
 
 namespace {
 

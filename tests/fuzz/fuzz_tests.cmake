@@ -44,7 +44,7 @@ if(VOXREF_FUZZ)
   target_link_libraries(make_leb_seeds PRIVATE voxref_reference)
   voxref_warnings(make_leb_seeds)
   add_executable(make_fuzz_seeds fuzz/make_fuzz_seeds.cpp)
-  target_link_libraries(make_fuzz_seeds PRIVATE voxref_conformance ZLIB::ZLIB)
+  target_link_libraries(make_fuzz_seeds PRIVATE voxref_catalog ZLIB::ZLIB)
   voxref_warnings(make_fuzz_seeds)
 
   set(fuzz_corpus "${PROJECT_BINARY_DIR}/fuzz-corpus")

@@ -25,17 +25,17 @@
 #include <string>
 #include <vector>
 
-#include "conformance/catalog.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/io/raw_volume.h"
 #include "conformance/io/sha256.h"
-#include "conformance/io/timevarying/container.h"
-#include "conformance/iso/iso_fixtures.h"
-#include "conformance/iso/iso_manifest.h"
-#include "conformance/iso/iso_scene.h"
-#include "conformance/report/results_json.h"
-#include "conformance/report/results_reader.h"
-#include "conformance/sparsegrid/sparsegrid_scene.h"
-#include "conformance/timevarying/timevarying_scene.h"
+#include "reference/timevarying/container.h"
+#include "conformance/modules/iso/iso_fixtures.h"
+#include "conformance/modules/iso/iso_manifest.h"
+#include "conformance/modules/iso/iso_scene.h"
+#include "conformance/framework/report/results_json.h"
+#include "conformance/framework/report/results_reader.h"
+#include "conformance/modules/sparsegrid/sparsegrid_scene.h"
+#include "conformance/modules/timevarying/timevarying_scene.h"
 #include "reference/common/byte_stream.h"
 #include "reference/leb/lead1_coder.h"
 #include "reference/timevarying/plume.h"
@@ -86,11 +86,11 @@ void timevarying() {
     o.level = s.level;
     o.encoding = s.encoding;
     o.alphaOne = s.alphaOne;
-    io::TimeVaryingFile f;
+    ref::TimeVaryingFile f;
     f.transfer = ref::transferFunction(s.transfer);
     f.textures = ref::encodeTimeVarying(s.series, f.transfer, o);
-    const std::string bytes = io::serializeTimeVarying(f);
-    (void)io::parseTimeVarying(bytes, s.name);
+    const std::string bytes = ref::serializeTimeVarying(f);
+    (void)ref::parseTimeVarying(bytes);
     write(s.name, bytes);
   }
 }

@@ -1,7 +1,7 @@
-// libFuzzer target: reading a results.json back (conformance/report/results_reader.h): the
+// libFuzzer target: reading a results.json back (conformance/framework/report/results_reader.h): the
 // baseline of `voxref conform --baseline OLD/results.json`, and (caseFromJson) the result a
 // case's process hands to the runner. Then what --baseline does with it: the diff against
-// another run (conformance/report/baseline_diff.h), its JSON and its terminal report.
+// another run (conformance/framework/report/baseline_diff.h), its JSON and its terminal report.
 //
 // Contract under test:
 // - parseResults (the bytes of a file; loadResults reads the file and calls it) either returns or
@@ -19,8 +19,8 @@
 #include <string_view>
 #include <vector>
 
-#include "conformance/report/baseline_diff.h"
-#include "conformance/report/results_reader.h"
+#include "conformance/framework/report/baseline_diff.h"
+#include "conformance/framework/report/results_reader.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace voxref::conf;

@@ -1,7 +1,7 @@
 // libFuzzer target: the scene JSON parsers on arbitrary bytes: the sparse-grid scene
-// (conformance/sparsegrid/sparsegrid_scene.h, docs/scenes.md), the time-varying scene
-// (conformance/timevarying/timevarying_scene.h), both read by `voxref render --scene FILE`, and
-// the isosurface scene (conformance/iso/iso_scene.h), read from fixture manifests. The bytes are
+// (conformance/modules/sparsegrid/sparsegrid_scene.h, docs/scenes.md), the time-varying scene
+// (conformance/modules/timevarying/timevarying_scene.h), both read by `voxref render --scene FILE`, and
+// the isosurface scene (conformance/modules/iso/iso_scene.h), read from fixture manifests. The bytes are
 // parsed as JSON with nlohmann (an exception there ends the run: that is nlohmann's contract, not
 // ours; note that it is a parse_error or, for a number beyond double's range, an out_of_range, which
 // `voxref render` once let through) and the document goes to all three parsers.
@@ -30,9 +30,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "conformance/iso/iso_scene.h"
-#include "conformance/sparsegrid/sparsegrid_scene.h"
-#include "conformance/timevarying/timevarying_scene.h"
+#include "conformance/modules/iso/iso_scene.h"
+#include "conformance/modules/sparsegrid/sparsegrid_scene.h"
+#include "conformance/modules/timevarying/timevarying_scene.h"
 
 namespace {
 

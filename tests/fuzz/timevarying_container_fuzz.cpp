@@ -1,4 +1,4 @@
-// libFuzzer target: the time-varying container reader (conformance/io/timevarying/container.h,
+// libFuzzer target: the time-varying container reader (reference/timevarying/container.h,
 // FORMAT.md beside it) on arbitrary bytes, then the exact decoder on whatever it accepts.
 //
 // Contract under test:
@@ -21,18 +21,19 @@
 #include <string>
 #include <string_view>
 
-#include "conformance/io/timevarying/container.h"
+#include "reference/common/byte_stream.h"
+#include "reference/timevarying/container.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace voxref;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
-  io::TimeVaryingFile f;
+  ref::TimeVaryingFile f;
   try {
-    f = io::parseTimeVarying(bytes, "fuzz.vxtv");
-  } catch (const io::FormatError&) {
+    f = ref::parseTimeVarying(bytes);
+  } catch (const ref::StreamError&) {
     return 0;
   }
-  const std::string again = io::serializeTimeVarying(f);
+  const std::string again = ref::serializeTimeVarying(f);
   if (again.size() != size || std::string_view(again).substr(0, size - 4) != bytes.substr(0, size - 4)) {
     std::fprintf(stderr, "serializeTimeVarying(parseTimeVarying(b)) != b (%zu bytes, %zu written back)\n", size, again.size());
     std::abort();

@@ -1,0 +1,63 @@
+#include "conformance/framework/isolation/interrupt.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <system_error>
+
+namespace voxref::conf::isolation {
+namespace {
+
+// Signal handlers may touch only lock-free atomics and async-signal-safe calls (POSIX.1-2017,
+// section 2.4.3): write() to the pipe and the sig_atomic_t below.
+volatile sig_atomic_t gSignal = 0;
+int gPipe[2] = {-1, -1};
+struct sigaction gOldInt, gOldTerm;
+
+void onSignal(int sig) {
+  if (gSignal != 0) {  // the second one: the default action, now
+    signal(sig, SIG_DFL);
+    raise(sig);
+    return;
+  }
+  gSignal = sig;
+  const int saved = errno;
+  const char byte = 1;
+  [[maybe_unused]] const ssize_t n = write(gPipe[1], &byte, 1);
+  errno = saved;
+}
+
+}  // namespace
+
+InterruptGuard::InterruptGuard() {
+  if (pipe2(gPipe, O_CLOEXEC | O_NONBLOCK) != 0) throw std::system_error(errno, std::generic_category(), "pipe for interrupts");
+  gSignal = 0;
+  struct sigaction sa {};
+  sa.sa_handler = onSignal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, &gOldInt);
+  sigaction(SIGTERM, &sa, &gOldTerm);
+}
+
+InterruptGuard::~InterruptGuard() {
+  sigaction(SIGINT, &gOldInt, nullptr);
+  sigaction(SIGTERM, &gOldTerm, nullptr);
+  close(gPipe[0]);
+  close(gPipe[1]);
+  gPipe[0] = gPipe[1] = -1;
+}
+
+int interruptSignal() { return gSignal; }
+int interruptFd() { return gPipe[0]; }
+
+void forgetInterruptsInChild() {
+  signal(SIGINT, SIG_DFL);
+  signal(SIGTERM, SIG_DFL);
+  if (gPipe[0] >= 0) close(gPipe[0]);
+  if (gPipe[1] >= 0) close(gPipe[1]);
+  gPipe[0] = gPipe[1] = -1;
+}
+
+}  // namespace voxref::conf::isolation

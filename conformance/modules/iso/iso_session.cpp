@@ -1,0 +1,174 @@
+#include "conformance/modules/iso/iso_session.h"
+#include "conformance/framework/stopwatch.h"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "fixtures/raycast/mesh_raycast.h"
+#include "reference/iso/diamond_bounds.h"
+#include "reference/iso/extraction.h"
+#include "reference/iso/grid_field.h"
+#include "reference/leb/gradients.h"
+#include "reference/leb/hz_order.h"
+#include "reference/leb/leb_codec.h"
+#include "reference/leb/leb_stream.h"
+
+namespace voxref::conf {
+namespace {
+
+
+gpu::QueryBox queryBox(const ref::LebGrid& g, const ref::GridPoint& d, const ref::Dims3& dims) {
+  const ref::GridBox b = ref::diamondBox(g, d);
+  gpu::QueryBox q;
+  for (int a = 0; a < 3; ++a) {
+    q.lo[static_cast<std::size_t>(a)] = std::min<double>(b.lo[a], dims[static_cast<std::size_t>(a)] - 1) - kQueryBoxMargin;
+    q.hi[static_cast<std::size_t>(a)] = std::min<double>(b.hi[a], dims[static_cast<std::size_t>(a)] - 1) + kQueryBoxMargin;
+  }
+  return q;
+}
+
+}  // namespace
+
+std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, const IsoRunOptions& options) {
+  const ref::Volume<std::uint16_t> volume = isoSceneVolume(scene);
+  ref::DenseGridField dense(volume, ref::quantizedGradients(volume));
+  const ref::LebGrid grid = dense.grid();
+  const ref::DiamondBounds bounds = ref::computeDiamondBounds(grid, dense.values(), options.threads);
+  // The stream's sample width: 8 bits when every voxel fits (the built-in scenes, uint8 volumes),
+  // else 16 (a user's uint16 volume); lossless either way (reference/leb/FORMAT.md).
+  const bool fits8 = std::all_of(volume.data().begin(), volume.data().end(), [](std::uint16_t v) { return v <= 255; });
+  auto stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(ref::encodeLeb(volume, fits8 ? 8 : 16)));
+  ref::CompressedGridField field(stream, std::size_t{64} << 20);
+  const ref::HzOrder order(grid);
+
+  double iso = scene.isovalue;
+  ref::ViewRefinement refinement(bounds, iso);
+  std::unordered_map<std::uint64_t, int> visibleAt;  // diamond (linear index) -> frame it was found visible
+  ref::IsoMesh previous;
+  bool occludersValid = false;
+  std::vector<IsoFrame> frames;
+  for (int f = 0; f < scene.path.frames; ++f) {
+    IsoFrame fr;
+    fr.frame = f;
+    if (f == scene.isovalueChangeFrame) {
+      iso += scene.isovalueStep;
+      refinement.setIsovalue(iso);
+      visibleAt.clear();
+      occludersValid = false;  // the previous surface is not this isovalue's
+    }
+    fr.isovalue = iso;
+    fr.camera = ref::orbitCamera(scene.path, f, scene.camera);
+
+    std::unordered_set<std::uint64_t> culled;  // diamonds (linear index) culled this frame
+    auto isCulled = [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; };
+    auto queryDiamonds = [&](const ref::IsoMesh& occluder, const std::vector<ref::GridPoint>& diamonds) {
+      std::vector<gpu::QueryBox> boxes;
+      for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, volume.dims()));
+      return gpu::occlusionQueriesGl(gl, occluder, boxes, fr.camera);
+    };
+    auto refineAndExtract = [&] {
+      auto t = Clock::now();
+      const ref::RefinementStats st = refinement.update(fr.camera, scene.budget, isCulled);
+      fr.refinement.splits += st.splits;
+      fr.refinement.merges += st.merges;
+      fr.refinement.splitQueue = st.splitQueue;
+      fr.refinement.mergeQueue = st.mergeQueue;
+      fr.refinement.budgetExhausted = fr.refinement.budgetExhausted || st.budgetExhausted;
+      fr.secondsRefine += secondsSince(t);
+      t = Clock::now();
+      ref::ExtractionStats es;
+      fr.mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, iso, &es);
+      fr.secondsExtract += secondsSince(t);
+      fr.triangles = es.triangles;
+      fr.leafTetrahedra = es.leafTetrahedra;
+    };
+
+    // 1. Occlusion queries against the previous frame's surface.
+    std::vector<ref::GridPoint> tested;
+    auto t0 = Clock::now();
+    if (scene.occlusionCulling && occludersValid) {
+      for (const auto& queue : {refinement.splitQueue(), refinement.mergeQueue()})
+        for (const ref::GridPoint& d : queue) {
+          if (!bounds.mayContain(d, iso)) continue;
+          const auto it = visibleAt.find(grid.linearIndex(d));
+          if (it != visibleAt.end() && f - it->second < scene.retestVisibleEvery) continue;
+          tested.push_back(d);
+        }
+      const std::vector<std::uint32_t> samples = queryDiamonds(previous, tested);
+      for (std::size_t i = 0; i < tested.size(); ++i) {
+        const std::uint64_t id = grid.linearIndex(tested[i]);
+        if (samples[i] == 0 || scene.cullEveryTested) {
+          culled.insert(id);
+        } else {
+          visibleAt[id] = f;
+        }
+      }
+    }
+    fr.occlusionTests = tested.size();
+    fr.secondsQueries = secondsSince(t0);
+
+    // 2. Refinement; 3. extraction.
+    refineAndExtract();
+
+    // Optional verification: culled diamonds whose boxes show against this frame's own surface
+    // are un-culled and the frame is refined and extracted again.
+    if (scene.verifyCulls && !culled.empty()) {
+      t0 = Clock::now();
+      std::vector<ref::GridPoint> suspects;
+      for (const ref::GridPoint& d : tested)
+        if (isCulled(d)) suspects.push_back(d);
+      const std::vector<std::uint32_t> samples = queryDiamonds(fr.mesh, suspects);
+      for (std::size_t i = 0; i < suspects.size(); ++i)
+        if (samples[i] != 0) {
+          culled.erase(grid.linearIndex(suspects[i]));
+          visibleAt[grid.linearIndex(suspects[i])] = f;
+          ++fr.revokedCulls;
+        }
+      fr.secondsQueries += secondsSince(t0);
+      if (fr.revokedCulls > 0) refineAndExtract();
+    }
+    fr.culled = culled.size();
+    fr.pagesDecoded = field.reader().cacheStats().misses;
+
+    // 4. GL image and ground truth.
+    t0 = Clock::now();
+    fr.gl = gpu::renderIsoMeshGl(gl, fr.mesh, fr.camera);
+    fr.secondsGl = secondsSince(t0);
+    t0 = Clock::now();
+    fr.truth = fx::castMesh(fr.mesh, fr.camera, options.threads);
+    fr.secondsEmbree = secondsSince(t0);
+    std::unordered_set<ref::DiamondId> visible(fr.truth.item.begin(), fr.truth.item.end());
+    visible.erase(ref::kNoDiamond);
+    fr.visibleDiamonds = visible.size();
+    for (const auto& queue : {refinement.splitQueue(), refinement.mergeQueue()})
+      for (const ref::GridPoint& d : queue) {
+        if (!bounds.mayContain(d, iso)) continue;
+        const bool seen = visible.count(static_cast<ref::DiamondId>(order.index(d))) != 0;
+        if (!seen) ++fr.invisibleCandidates;
+      }
+    // A culled diamond is judged where it ended: still a leaf (its own tetrahedra), or merged
+    // (its tetrahedra then belong to it as a leaf again); either way by its own id.
+    for (std::uint64_t id : culled) {
+      if (visible.count(static_cast<ref::DiamondId>(order.index(grid.pointAt(id)))) != 0) {
+        ++fr.falseCulls;
+      } else {
+        ++fr.culledInvisible;
+      }
+    }
+    previous = fr.mesh;
+    occludersValid = true;
+    if (!options.keepImages && !frames.empty()) {
+      frames.back().mesh = {};
+      frames.back().gl = {};
+      frames.back().truth = {};
+    }
+    frames.push_back(std::move(fr));
+    if (options.progress) options.progress(f);
+  }
+  return frames;
+}
+
+}  // namespace voxref::conf

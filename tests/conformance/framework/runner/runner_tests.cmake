@@ -1,0 +1,87 @@
+# Tests of the runner (issue 6): isolation, time limits, --jobs, --shard, Ctrl-C, --baseline.
+# Included from tests/CMakeLists.txt (voxref_test_executable, voxref_expect, voxref_bin, test_out).
+
+voxref_test_executable(runner_tests
+  SOURCES
+    conformance/framework/isolation/child_processes_test.cpp
+    conformance/framework/shard_test.cpp
+    conformance/framework/report/baseline_diff_test.cpp
+    conformance/framework/report/results_reader_test.cpp
+  LIBS voxref_catalog)
+
+set(check "$<TARGET_FILE:check_results>")
+
+# Every way a case can die, among cases that pass: each is its own status with its stderr kept,
+# and the run goes on to the cases after it (the controls come first in the catalogue).
+set(controls driver_crash=crash segfault=crash abort=crash exit=crash hang=timeout exception=crash)
+set(expect "")
+foreach(c IN LISTS controls)
+  string(REPLACE "=" ";" pair "${c}")
+  list(GET pair 0 id)
+  string(APPEND expect "|--expect-status|runner.control.${c}|--expect-stderr|runner.control.${id}=runner control:")
+endforeach()
+voxref_expect(runner.crash_and_hang_isolated
+  COMMAND "${voxref_bin}|conform|--runner-controls|--filter|runner.control.*,sparsegrid.hard.level1,sparsegrid.hard.data_extremes.zero|--timeout|5|--jobs|2|--out|${test_out}/runner-controls"
+  EXIT 1 OUTPUT "crash  runner.control.driver_crash: the case's process was killed by signal 11 \\(SIGSEGV.*timeout  runner.control.hang: .*time limit of 5 s.*summary: 2 pass 0 warn 0 fail 0 skip 5 crash 1 timeout"
+  CHECK "${check}|${test_out}/runner-controls/results.json|--min-cases|8${expect}"
+  LABELS runner TIMEOUT 120)
+voxref_expect(runner.controls_not_in_default_list COMMAND "${voxref_bin}|list|--filter|runner.*" EXIT 2 OUTPUT "no case matches")
+voxref_expect(runner.in_process_refuses_controls
+  COMMAND "${voxref_bin}|conform|--in-process|--runner-controls|--filter|runner.*|--out|${test_out}/runner-inproc" EXIT 2
+  OUTPUT "--in-process cannot run the runner's control cases")
+
+# --jobs does not change a bit: results and every image, 2 processes against 1 and against no isolation.
+set(jobs_filter "sparsegrid.combination.rgba8.l5.*,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres,timevarying.composite.*,iso.hard.*")
+voxref_expect(runner.jobs2 COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|2|--all-images|--out|${test_out}/runner-jobs2"
+  EXIT 0 LABELS runner TIMEOUT 600 SETS runner_jobs2)
+voxref_expect(runner.jobs1_same_bits COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|1|--all-images|--out|${test_out}/runner-jobs1"
+  EXIT 0 CHECK "${check}|${test_out}/runner-jobs1/results.json|--same-results-as|${test_out}/runner-jobs2/results.json|--min-cases|10"
+  LABELS runner TIMEOUT 600 NEEDS runner_jobs2)
+voxref_expect(runner.in_process_same_bits COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--in-process|--all-images|--out|${test_out}/runner-inproc-same"
+  EXIT 0 CHECK "${check}|${test_out}/runner-inproc-same/results.json|--same-results-as|${test_out}/runner-jobs2/results.json|--min-cases|10"
+  LABELS runner TIMEOUT 600 NEEDS runner_jobs2)
+# The comparison can fail: the same cases on llvmpipe without its 8-bit sampler all pass, but
+# their bits differ (the r8 LINEAR cases filter with float weights), and check_results says so.
+voxref_expect(runner.noaos_run COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|2|--all-images|--out|${test_out}/runner-noaos"
+  EXIT 0 ENVIRONMENT "GALLIVM_PERF=no_aos_sampling" LABELS runner TIMEOUT 600 SETS runner_noaos)
+voxref_expect(runner.same_bits_check_can_fail
+  COMMAND "${check}|${test_out}/runner-noaos/results.json|--same-results-as|${test_out}/runner-jobs2/results.json"
+  EXIT 1 OUTPUT "VIOLATION: sparsegrid.texture.r8.[a-z]+.linear.repeat differs from" LABELS runner NEEDS "runner_jobs2;runner_noaos")
+
+add_test(NAME runner.shard COMMAND ${CMAKE_COMMAND} -DVOXREF=$<TARGET_FILE:voxref> -P ${CMAKE_CURRENT_SOURCE_DIR}/conformance/runner/shard_test.cmake)
+set_tests_properties(runner.shard PROPERTIES LABELS runner)
+voxref_expect(runner.shard_conform COMMAND "${voxref_bin}|conform|--filter|sparsegrid.hard.*|--shard|2/5|--out|${test_out}/runner-shard"
+  EXIT 0 OUTPUT "case\\(s\\) \\(shard 2/5 of [0-9]+\\)" LABELS runner)
+
+add_test(NAME runner.interrupt_leaves_partial_report
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/conformance/runner/interrupt_test.sh $<TARGET_FILE:voxref> $<TARGET_FILE:check_results> ${test_out}/runner-interrupt)
+set_tests_properties(runner.interrupt_leaves_partial_report PROPERTIES LABELS runner TIMEOUT 300)
+
+# --baseline: the right profile's run is the baseline; the wrong profile's run regresses (exit 3)
+# and names the case and its moved figures; the other way round the case is fixed (exit 0).
+set(baseline_case sparsegrid.texture.r32f.exact.linear.clamp_to_edge)
+voxref_expect(runner.baseline_good COMMAND "${voxref_bin}|conform|--filter|${baseline_case}|--out|${test_out}/runner-baseline-good"
+  EXIT 0 ENVIRONMENT "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1" LABELS runner SETS runner_baseline_good)
+voxref_expect(runner.baseline_regression
+  COMMAND "${voxref_bin}|conform|--profile|llvmpipe|--filter|${baseline_case}|--baseline|${test_out}/runner-baseline-good/results.json|--out|${test_out}/runner-baseline-bad"
+  EXIT 3 ENVIRONMENT "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1"
+  OUTPUT "1 newly failing.*REGRESSED  ${baseline_case}: pass -> fail; exact.mismatched_pixels 0 -> [1-9]"
+  CHECK "${check}|${test_out}/runner-baseline-bad/results.json|--expect-regressed|${baseline_case}|--expect-status|${baseline_case}=fail"
+  LABELS runner NEEDS runner_baseline_good SETS runner_baseline_bad)
+voxref_expect(runner.baseline_fixed
+  COMMAND "${voxref_bin}|conform|--filter|${baseline_case}|--baseline|${test_out}/runner-baseline-bad/results.json|--out|${test_out}/runner-baseline-fixed"
+  EXIT 0 ENVIRONMENT "GALLIUM_OVERRIDE_CPU_CAPS=sse4.1" OUTPUT "0 newly failing, 0 newly warning, 1 fixed"
+  CHECK "${check}|${test_out}/runner-baseline-fixed/results.json|--expect-fixed|${baseline_case}"
+  LABELS runner NEEDS runner_baseline_bad)
+voxref_expect(runner.baseline_unreadable
+  COMMAND "${voxref_bin}|conform|--filter|${baseline_case}|--baseline|${test_out}/no-such-dir/results.json|--out|${test_out}/runner-baseline-missing"
+  EXIT 2 OUTPUT "--baseline: .*no-such-dir/results.json")
+
+# A driver judged by the envelope alone (as an unknown driver is): --profile envelope. The report
+# says so; the exact oracle does not run; the envelope judges every case of all three kinds of
+# envelope-judged scenes.
+voxref_expect(runner.envelope_alone
+  COMMAND "${voxref_bin}|conform|--profile|envelope|--filter|sparsegrid.combination.rgba8.l5.*,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres|--out|${test_out}/runner-envelope"
+  EXIT 0 OUTPUT "profile none: envelope oracle alone.*summary: [1-9][0-9]* pass 0 warn 0 fail"
+  CHECK "${check}|${test_out}/runner-envelope/results.json|--expect-envelope-alone|--min-cases|10"
+  LABELS runner TIMEOUT 600)

@@ -1,0 +1,18 @@
+cmake_minimum_required(VERSION 3.25)
+# Script mode: builds TARGET alone in BUILD_DIR. With FORBIDDEN (a header path), the build must fail
+# and say that header cannot be found; without, it must succeed (tests/layering/CMakeLists.txt).
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${BUILD_DIR}" --target "${TARGET}" RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(FORBIDDEN)
+  if(status EQUAL 0)
+    message(FATAL_ERROR "${TARGET} compiled: its include of ${FORBIDDEN} was not refused\n${out}${err}")
+  endif()
+  string(FIND "${out}${err}" "${FORBIDDEN}: No such file or directory" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "${TARGET} failed, but not because ${FORBIDDEN} cannot be found:\n${out}${err}")
+  endif()
+  message("layering: ${TARGET} does not compile: ${FORBIDDEN} is outside what it may include")
+elseif(NOT status EQUAL 0)
+  message(FATAL_ERROR "${TARGET} (allowed includes only) does not build:\n${out}${err}")
+else()
+  message("layering: ${TARGET} builds")
+endif()
