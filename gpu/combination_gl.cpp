@@ -22,10 +22,7 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
   const Program program = buildStageProgram(context, combinationStage(), options.shader);
   VertexArray vao(gl);
 
-  target.bind();
-  vao.bind();
-  program.use();
-  gl.Viewport(0, 0, frame.width, frame.height);
+  beginFullscreenPass(gl, target, vao, program);
   gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   gl.Enable(GL_BLEND);
   gl.BlendFunc(GL_ONE, GL_ONE);

@@ -209,4 +209,11 @@ VertexArray::VertexArray(const GlApi& gl) : gl_(&gl) {
 
 void VertexArray::bind() const { gl_->BindVertexArray(handle_.id()); }
 
+void beginFullscreenPass(const GlApi& gl, const ColorTarget& target, const VertexArray& vao, const Program& program) {
+  target.bind();
+  vao.bind();
+  program.use();
+  gl.Viewport(0, 0, target.width(), target.height());
+}
+
 }  // namespace voxref::gpu

@@ -116,4 +116,8 @@ class VertexArray {
   GlHandle handle_;
 };
 
+// The start of every full-screen pass: the target, the (attribute-less) vertex array and the
+// program bound, the viewport over the whole target.
+void beginFullscreenPass(const GlApi& gl, const ColorTarget& target, const VertexArray& vao, const Program& program);
+
 }  // namespace voxref::gpu

@@ -25,10 +25,7 @@ ref::ProbeFrame drawSweep(Context& context, const ref::ProbeSweep& sweep) {
                           ref::SamplerState{ref::Filter::Linear, sweep.wrap, 0.0});
   const Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kProbeSweepFrag, "probe_sweep.frag");
   const VertexArray vao(gl);
-  target.bind();
-  vao.bind();
-  program.use();
-  gl.Viewport(0, 0, sweep.width, sweep.height);
+  beginFullscreenPass(gl, target, vao, program);
   gl.Disable(GL_BLEND);
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindTexture(GL_TEXTURE_3D, texture.id());
@@ -56,10 +53,7 @@ ref::ProbeFrame drawWrite(Context& context, const ref::ProbeWrite& write) {
                           ref::SamplerState{ref::Filter::Nearest, ref::Wrap::ClampToEdge, 0.0});
   const Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kProbeWriteFrag, "probe_write.frag");
   const VertexArray vao(gl);
-  target.bind();
-  vao.bind();
-  program.use();
-  gl.Viewport(0, 0, write.width, write.height);
+  beginFullscreenPass(gl, target, vao, program);
   gl.ClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   gl.Clear(GL_COLOR_BUFFER_BIT);
   gl.Enable(GL_BLEND);

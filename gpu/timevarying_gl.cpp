@@ -76,10 +76,7 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
   ColorTarget target(gl, info.maxRenderbufferSize, ref::FramebufferFormat::RGBA8, frame.width, frame.height);
   const Program program = buildStageProgram(context, decoderStage(variant), shader);
   VertexArray vao(gl);
-  target.bind();
-  vao.bind();
-  program.use();
-  gl.Viewport(0, 0, frame.width, frame.height);
+  beginFullscreenPass(gl, target, vao, program);
   gl.ActiveTexture(GL_TEXTURE0);
   gl.BindTexture(GL_TEXTURE_3D, index.id());
   gl.ActiveTexture(GL_TEXTURE1);

@@ -21,7 +21,7 @@
 #include "conformance/modules/catalog.h"
 #include "conformance/framework/driver_info.h"
 #include "conformance/io/atomic_file.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 #include "reference/common/parallel.h"
 
 namespace voxref::conf {

@@ -31,15 +31,18 @@ void addRow(BenchTable& t, const std::string& id, const std::string& state, cons
                             {"forced_over_pruned", ratio}, {"identical", identical}});
 }
 
-const std::vector<std::string> kColumns = {"case (built-in scene)", "state", "stages pruned", "pruned", "forced", "forced / pruned", "identical bits"};
+// The header both tables share: `what` names the system.
+BenchTable pruningTable(const std::string& id, const std::string& what, const emu::PrecisionProfile& profile) {
+  BenchTable t;
+  t.id = id;
+  t.title = "Effect pruning, " + what + ": emulation with only the scene's effects vs every effect forced on (profile " + std::string(profile.name) + ")";
+  t.columns = {"case (built-in scene)", "state", "stages pruned", "pruned", "forced", "forced / pruned", "identical bits"};
+  return t;
+}
 
 // One case per distinct sampling / framebuffer state (the first in catalogue order), at most `cap`.
 BenchTable combinationTable(const BenchOptions& o, const emu::PrecisionProfile& profile) {
-  BenchTable t;
-  t.id = "pruning.combination";
-  t.title = "Effect pruning, combination technique: emulation with only the scene's effects vs every effect forced on (profile " +
-            std::string(profile.name) + ")";
-  t.columns = kColumns;
+  BenchTable t = pruningTable("pruning.combination", "combination technique", profile);
   std::set<std::tuple<int, int, int, int, bool>> seen;
   const std::size_t cap = o.quick ? 4 : 10;
   // Scenes where pruning removes the most first: NEAREST sampling, then float framebuffers, then the rest.
@@ -101,11 +104,7 @@ BenchTable combinationTable(const BenchOptions& o, const emu::PrecisionProfile& 
 }
 
 BenchTable timeVaryingTable(const BenchOptions& o, const emu::PrecisionProfile& profile) {
-  BenchTable t;
-  t.id = "pruning.timevarying";
-  t.title = "Effect pruning, time-varying decoders: emulation with only the scene's effects vs every effect forced on (profile " +
-            std::string(profile.name) + ")";
-  t.columns = kColumns;
+  BenchTable t = pruningTable("pruning.timevarying", "time-varying decoders", profile);
   std::set<std::tuple<int, int, bool>> seen;
   const std::size_t cap = o.quick ? 3 : 6;
   for (const Case& c : allCases()) {

@@ -4,7 +4,7 @@
 
 #include "conformance/modules/catalog.h"
 #include "conformance/framework/controls/runner_controls.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 
 namespace voxref::cli {
 

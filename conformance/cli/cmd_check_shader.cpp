@@ -1,5 +1,6 @@
 // voxref check-shader: one case with the user's fragment shader in place of the built-in stage,
 // judged by the case's own oracles (docs/shader-interface.md).
+#include <memory>
 #include <cstdio>
 #include <iostream>
 
@@ -16,6 +17,22 @@
 #include "gpu/shader_override.h"
 
 namespace voxref::cli {
+namespace {
+
+// One case with the user's fragment shader in place of its built-in stage
+// (docs/shader-interface.md): 0 pass, 1 fail, 2 usage, missing file, no such stage, or the shader
+// does not compile (the info log with the file's line numbers on stderr).
+struct CheckShaderOptions {
+  std::string caseId;
+  std::filesystem::path shader;
+  bool printInterface = false;  // print the stage's interface and built-in shader instead
+  std::string driver = "llvmpipe";
+  std::string profile = "auto";
+  std::filesystem::path out = "voxref-check-shader";
+  int threads = 0;
+  std::string command;
+};
+
 namespace {
 
 const conf::Case& findCase(const std::vector<conf::Case>& cases, const std::string& id) {
@@ -147,6 +164,23 @@ int runCheckShader(const CheckShaderOptions& o) {
     return 2;
   }
   return r.status == conf::Status::Pass || r.status == conf::Status::Warn ? 0 : 1;
+}
+
+}  // namespace
+
+Subcommand addCheckShaderCommand(CLI::App& app, const std::string& invocation) {
+  auto o = std::make_shared<CheckShaderOptions>();
+  o->command = invocation;
+  CLI::App* sub = app.add_subcommand("check-shader", "run one case with your fragment shader in place of the built-in stage");
+  sub->add_option("--case", o->caseId, "case id from voxref list")->required();
+  sub->add_option("--shader", o->shader, "your GLSL fragment shader, without #version (docs/shader-interface.md)");
+  sub->add_flag("--print-interface", o->printInterface, "print the case's stage: its interface and the built-in shader");
+  sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
+  sub->add_option("--profile", o->profile, "auto or a precision profile name")->default_val("auto");
+  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-check-shader");
+  sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
+
+  return {sub, [o] { return runCheckShader(*o); }};
 }
 
 }  // namespace voxref::cli

@@ -1,5 +1,6 @@
 // `voxref probe`: render the probe frames, infer the driver's fingerprint from their bits alone,
 // hold it against the known profiles (docs/probe.md). GL_RENDERER is printed, never consulted.
+#include <memory>
 #include <iostream>
 
 #include "conformance/cli/commands.h"
@@ -7,11 +8,20 @@
 #include "conformance/io/atomic_file.h"
 #include "conformance/framework/probe/driver_fingerprint.h"
 #include "conformance/framework/probe/fingerprint_match.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 #include "gpu/gl_error.h"
 #include "gpu/probe_gl.h"
 
 namespace voxref::cli {
+namespace {
+
+// Driver fingerprinting (docs/probe.md): 0 a known profile matches the inferred fingerprint, 1 none
+// does, 2 usage or no GL context.
+struct ProbeOptions {
+  std::string driver = "llvmpipe";
+  std::filesystem::path out;  // optional JSON report, written atomically
+};
+
 
 int runProbe(const ProbeOptions& o) {
   const auto driver = gpu::parseDriver(o.driver);
@@ -53,6 +63,17 @@ int runProbe(const ProbeOptions& o) {
     std::cout << "wrote " << o.out.string() << "\n";
   }
   return matched ? 0 : 1;
+}
+
+}  // namespace
+
+Subcommand addProbeCommand(CLI::App& app) {
+  auto o = std::make_shared<ProbeOptions>();
+  CLI::App* sub = app.add_subcommand("probe", "infer the driver's precision from probe frames and match it to the known profiles");
+  sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
+  sub->add_option("--out", o->out, "also write the fingerprint as JSON");
+
+  return {sub, [o] { return runProbe(*o); }};
 }
 
 }  // namespace voxref::cli

@@ -1,3 +1,4 @@
+#include <memory>
 #include <fstream>
 #include <iostream>
 
@@ -7,7 +8,7 @@
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/image_io.h"
 #include "conformance/framework/progress.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 #include "conformance/modules/sparsegrid/prepared_scene.h"
 #include "reference/timevarying/exact_colours.h"
 #include "conformance/modules/timevarying/timevarying_scene.h"
@@ -18,6 +19,17 @@
 #include "reference/common/framebuffer_codes.h"
 
 namespace voxref::cli {
+namespace {
+
+struct RenderOptions {
+  std::string scene;  // a scene JSON file or a case id
+  std::string backend = "reference";
+  std::string driver = "llvmpipe";
+  std::string profile = "llvmpipe";  // for the emulation backend ("auto": from --driver's context)
+  std::filesystem::path out;
+  int threads = 0;
+};
+
 namespace {
 
 // A scene JSON file, or the scene of a built-in case.
@@ -149,6 +161,21 @@ int runRender(const RenderOptions& o) {
   io::writeExr(o.out, image.width, image.height, {y}, attributes);
   std::cout << "wrote " << o.out.string() << " (" << image.width << "x" << image.height << ", " << o.backend << ")\n";
   return 0;
+}
+
+}  // namespace
+
+Subcommand addRenderCommand(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* sub = app.add_subcommand("render", "render one scene with one backend into an EXR image");
+  sub->add_option("--scene", o->scene, "scene JSON file, or a case id from voxref list")->required();
+  sub->add_option("--backend", o->backend, "reference, emulation or gl")->default_val("reference");
+  sub->add_option("--driver", o->driver, "GL driver for the gl backend")->default_val("llvmpipe");
+  sub->add_option("--profile", o->profile, "precision profile for the emulation backend")->default_val("llvmpipe");
+  sub->add_option("--out", o->out, "output image (.exr)")->required();
+  sub->add_option("--threads", o->threads, "CPU threads (0: all)")->default_val(0);
+
+  return {sub, [o] { return runRender(*o); }};
 }
 
 }  // namespace voxref::cli

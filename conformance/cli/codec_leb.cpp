@@ -15,7 +15,7 @@
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/leb_file.h"
 #include "conformance/io/raw_volume.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 #include "reference/common/byte_stream.h"
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/grid_field.h"

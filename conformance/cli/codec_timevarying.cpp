@@ -7,7 +7,7 @@
 #include "conformance/io/raw_volume.h"
 #include "conformance/io/timevarying_file.h"
 #include "conformance/framework/progress.h"
-#include "conformance/framework/runner.h"
+#include "conformance/framework/exit_status.h"
 #include "reference/timevarying/plume.h"
 
 namespace voxref::cli {

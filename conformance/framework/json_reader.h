@@ -55,6 +55,11 @@ class JsonObjectReader {
     return has(key) ? get<T>(key) : fallback;
   }
   int getInt(const char* key, int fallback, int lo, int hi);  // with a range check
+  // A required integer in [lo, hi] (int64; a JSON integer, not 2.0 or 1e300).
+  std::int64_t getInteger(const char* key, std::int64_t lo, std::int64_t hi);
+  // A required array of exactly `count` integers, each in [lo, hi]; errors name the element
+  // ("dims[2]: 2000 is outside 1..1025").
+  std::vector<std::int64_t> getIntegers(const char* key, std::size_t count, std::int64_t lo, std::int64_t hi);
   // A nested object reader; the key counts as known.
   JsonObjectReader object(const char* key);
   // Throws JsonFieldError naming the first key that was never read.
@@ -63,6 +68,7 @@ class JsonObjectReader {
 
  private:
   const nlohmann::json& at(const char* key);
+  static std::int64_t integerIn(const nlohmann::json& v, const std::string& path, std::int64_t lo, std::int64_t hi);
   // An integer within int's range (a JSON integer: not 2.0).
   static bool isInt(const nlohmann::json& v) {
     if (v.is_number_unsigned()) return v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max());
@@ -83,5 +89,10 @@ class JsonObjectReader {
   std::string path_;
   std::set<std::string> read_;
 };
+
+// The extents of a plane frame as both plane-based scene kinds take them (sparse grids and
+// time-varying volumes): "image" [width, height] and "planes", each within 1..4096, both optional
+// (the arguments keep their values when a key is absent). JsonFieldError naming the field.
+void readFrameExtents(JsonObjectReader& r, int& width, int& height, int& planes);
 
 }  // namespace voxref::conf

@@ -159,6 +159,17 @@ void ensureDirectory(const std::filesystem::path& dir) {
     throw IoError("cannot create directory " + dir.string() + (ec ? ": " + ec.message() : ""));
 }
 
+TemporaryFolder::TemporaryFolder(std::filesystem::path dir) : dir_(std::move(dir)) {
+  std::error_code ec;
+  std::filesystem::remove_all(dir_, ec);
+  ensureDirectory(dir_);
+}
+
+TemporaryFolder::~TemporaryFolder() {
+  std::error_code ignored;
+  std::filesystem::remove_all(dir_, ignored);
+}
+
 std::string readWholeFile(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))

@@ -76,4 +76,18 @@ std::string readWholeFile(const std::filesystem::path& path);
 // Creates the directory (and parents); throws IoError naming it.
 void ensureDirectory(const std::filesystem::path& dir);
 
+// A folder made empty now and removed with everything in it when this goes out of scope, whatever
+// happens in between (a staging or scratch folder). Throws IoError when it cannot be made.
+class TemporaryFolder {
+ public:
+  explicit TemporaryFolder(std::filesystem::path dir);
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  ~TemporaryFolder();
+  const std::filesystem::path& path() const { return dir_; }
+
+ private:
+  std::filesystem::path dir_;
+};
+
 }  // namespace voxref::io

@@ -326,7 +326,9 @@ bi_manifest(manifest.sha256_malformed MAKE "${fx_make}|json:/files/0/sha256=\"ab
 bi_manifest(manifest.path_outside_the_folder MAKE "${fx_make}|json:/files/0/path=\"/etc/passwd\""
   EXPECT "<DIR>/fx/manifest\\.json: files\\[0\\]\\.path: '/etc/passwd' is not a relative path inside the fixture directory")
 bi_manifest(scene_iso.name_missing MAKE "${fx_make}|json-remove:/scenes/0/name"
-  EXPECT "<DIR>/fx/manifest\\.json: scenes\\[0\\][^\n]*'name' not found")
+  EXPECT "<DIR>/fx/manifest\\.json: scenes\\[0\\]\\.name: missing")
+bi_manifest(scene_iso.unknown_key MAKE "${fx_make}|json:/scenes/0/colour=\"red\""
+  EXPECT "<DIR>/fx/manifest\\.json: scenes\\[0\\]\\.colour: unknown key")
 bi_manifest(scene_iso.name_escapes_the_folder MAKE "${fx_make}|json:/scenes/0/name=\"../x\""
   EXPECT "<DIR>/fx/manifest\\.json: scenes\\[0\\]\\.name: '\\.\\./x' is not a plain file name")
 bi_manifest(scene_iso.isovalue_wrong_type MAKE "${fx_make}|json:/scenes/0/isovalue=\"85\""

@@ -84,42 +84,33 @@ CaseResult notRun(CaseResult r, const std::string& why) {
   return r;
 }
 
-// Occlusion and mesh-image oracles over every frame of a scene.
-CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::string& description, const IsoScene& scene, bool expectEmpty) {
-  CaseResult r;
-  r.id = id;
-  r.system = "iso";
-  r.description = description;
-  if (ctx.gl() == nullptr) return notRun(r, "no GL context");
-  const std::optional<Finding> primitiveId = primitiveIdFinding(gpu::checkPrimitiveIdGl(*ctx.gl()));
-  IsoRunOptions options;
-  options.keepImages = true;
-  options.threads = ctx.threads();
-  const auto t0 = Clock::now();
-  const std::vector<IsoFrame> frames = runIsoFrames(*ctx.gl(), scene, options);
-  r.secondsGl = secondsSince(t0);
-
+// What every frame of a scene measured, summed; and each frame's figures.
+struct FramesTally {
   std::size_t falseCulls = 0, culledInvisible = 0, invisible = 0, tests = 0, triangles = 0;
   std::size_t coverageFail = 0, depthFail = 0, visibilityFail = 0, otherAllowed = 0, same = 0;
   double worstOverBound = 0.0, worstDepth = 0.0;
+  std::size_t frames = 0;
   nlohmann::json perFrame = nlohmann::json::array();
   ShownFrame shown;
-  for (const IsoFrame& f : frames) {
-    const MeshImageAgreement a = compareMeshImages(f.mesh, f.gl, f.truth, f.camera);
-    shown.consider(f, a);
-    falseCulls += f.falseCulls;
-    culledInvisible += f.culledInvisible;
-    invisible += f.invisibleCandidates;
-    tests += f.occlusionTests;
-    triangles += f.triangles;
-    coverageFail += a.coverageFailures;
-    depthFail += a.depthFailures;
-    visibilityFail += a.visibilityFailures;
-    otherAllowed += a.otherTriangleAllowed;
-    same += a.sameTriangle;
-    worstOverBound = std::max(worstOverBound, a.maxDepthOverBound);
-    worstDepth = std::max(worstDepth, a.maxDepthDifference);
-    perFrame.push_back({{"frame", f.frame},
+};
+
+void addFrame(FramesTally& t, const IsoFrame& f) {
+  const MeshImageAgreement a = compareMeshImages(f.mesh, f.gl, f.truth, f.camera);
+  t.shown.consider(f, a);
+  ++t.frames;
+  t.falseCulls += f.falseCulls;
+  t.culledInvisible += f.culledInvisible;
+  t.invisible += f.invisibleCandidates;
+  t.tests += f.occlusionTests;
+  t.triangles += f.triangles;
+  t.coverageFail += a.coverageFailures;
+  t.depthFail += a.depthFailures;
+  t.visibilityFail += a.visibilityFailures;
+  t.otherAllowed += a.otherTriangleAllowed;
+  t.same += a.sameTriangle;
+  t.worstOverBound = std::max(t.worstOverBound, a.maxDepthOverBound);
+  t.worstDepth = std::max(t.worstDepth, a.maxDepthDifference);
+  t.perFrame.push_back({{"frame", f.frame},
                         {"isovalue", f.isovalue},
                         {"splits", f.refinement.splits},
                         {"merges", f.refinement.merges},
@@ -137,44 +128,65 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
                         {"depth_failures", a.depthFailures},
                         {"visibility_failures", a.visibilityFailures},
                         {"max_depth_difference", a.maxDepthDifference}});
-  }
-  r.figures["frames"] = perFrame;
-  r.figures["scene"] = {{"data", scene.data},
-                        {"dims", scene.dims},
-                        {"isovalue", scene.isovalue},
-                        {"frames", scene.path.frames},
-                        {"threshold_px", scene.budget.threshold},
-                        {"max_splits", scene.budget.maxSplits}};
+}
 
-  const double efficiency = invisible == 0 ? 0.0 : static_cast<double>(culledInvisible) / invisible;
-  // The negative control inverts the expectation: a culler that culls everything it tests must be
-  // caught culling visible diamonds.
-  const bool occlusionOk = scene.cullEveryTested ? falseCulls > 0 : falseCulls == 0;
-  r.oracles.push_back({"occlusion", occlusionOk ? Verdict::Pass : Verdict::Fail,
-                       std::to_string(falseCulls) + " false culls over " + std::to_string(frames.size()) + " frames; " + std::to_string(tests) +
-                           " occlusion tests; culled " + std::to_string(culledInvisible) + " of " + std::to_string(invisible) +
-                           " invisible candidates (" + std::to_string(std::lround(100.0 * efficiency)) + " %)",
-                       {{"false_culls", falseCulls}, {"efficiency", efficiency}, {"tests", tests}}});
-  const bool imagesAgree = coverageFail == 0 && depthFail == 0 && visibilityFail == 0;
+// No false cull, or for the negative control (a culler that culls everything it tests) some.
+OracleResult occlusionOracle(const FramesTally& t, bool cullEveryTested) {
+  const double efficiency = t.invisible == 0 ? 0.0 : static_cast<double>(t.culledInvisible) / t.invisible;
+  const bool ok = cullEveryTested ? t.falseCulls > 0 : t.falseCulls == 0;
+  return {"occlusion", ok ? Verdict::Pass : Verdict::Fail,
+          std::to_string(t.falseCulls) + " false culls over " + std::to_string(t.frames) + " frames; " + std::to_string(t.tests) +
+              " occlusion tests; culled " + std::to_string(t.culledInvisible) + " of " + std::to_string(t.invisible) + " invisible candidates (" +
+              std::to_string(std::lround(100.0 * efficiency)) + " %)",
+          {{"false_culls", t.falseCulls}, {"efficiency", efficiency}, {"tests", t.tests}}};
+}
+
+// GL draws each frame's mesh as Embree sees it (mesh_image_compare.h); `driverNote` names a driver
+// finding that explains missing pixels.
+OracleResult meshImageOracle(const FramesTally& t, const std::string& driverNote) {
+  const bool agree = t.coverageFail == 0 && t.depthFail == 0 && t.visibilityFail == 0;
+  return {"mesh_image", agree ? Verdict::Pass : Verdict::Fail,
+          std::to_string(t.coverageFail) + " coverage, " + std::to_string(t.depthFail) + " depth and " + std::to_string(t.visibilityFail) +
+              " visibility failures" + driverNote + "; " + std::to_string(t.same) + " pixels show the same triangle, " + std::to_string(t.otherAllowed) +
+              " another one within the snapping allowance; worst depth " + std::to_string(t.worstOverBound) + " of its allowance (" +
+              std::to_string(t.worstDepth) + " grid units)",
+          {{"coverage_failures", t.coverageFail}, {"depth_failures", t.depthFail}, {"visibility_failures", t.visibilityFail},
+           {"same_triangle_pixels", t.same}, {"other_triangle_allowed", t.otherAllowed}}};
+}
+
+// Occlusion and mesh-image oracles over every frame of a scene.
+CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::string& description, const IsoScene& scene, bool expectEmpty) {
+  CaseResult r;
+  r.id = id;
+  r.system = "iso";
+  r.description = description;
+  if (ctx.gl() == nullptr) return notRun(r, "no GL context");
+  const std::optional<Finding> primitiveId = primitiveIdFinding(gpu::checkPrimitiveIdGl(*ctx.gl()));
+  IsoRunOptions options;
+  options.keepImages = true;
+  options.threads = ctx.threads();
+  const auto t0 = Clock::now();
+  const std::vector<IsoFrame> frames = runIsoFrames(*ctx.gl(), scene, options);
+  r.secondsGl = secondsSince(t0);
+  FramesTally t;
+  for (const IsoFrame& f : frames) addFrame(t, f);
+  r.figures["frames"] = t.perFrame;
+  r.figures["scene"] = {{"data", scene.data},           {"dims", scene.dims},
+                        {"isovalue", scene.isovalue},   {"frames", scene.path.frames},
+                        {"threshold_px", scene.budget.threshold}, {"max_splits", scene.budget.maxSplits}};
   if (primitiveId) {  // findings inform; the verdict stays the mesh image's
     Finding f = *primitiveId;
-    f.figures["samples_changed"] = coverageFail;  // pixels the truth covers that GL left empty
+    f.figures["samples_changed"] = t.coverageFail;  // pixels the truth covers that GL left empty
     r.findings.push_back(f);
   }
   const std::string driverNote =
-      primitiveId && coverageFail > 0 ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " + std::string(kPrimitiveIdFinding) + ")" : "";
-  r.oracles.push_back({"mesh_image", imagesAgree ? Verdict::Pass : Verdict::Fail,
-                       std::to_string(coverageFail) + " coverage, " + std::to_string(depthFail) + " depth and " + std::to_string(visibilityFail) +
-                           " visibility failures" + driverNote + "; " + std::to_string(same) + " pixels show the same triangle, " +
-                           std::to_string(otherAllowed) + " another one within the snapping allowance; worst depth " + std::to_string(worstOverBound) +
-                           " of its allowance (" + std::to_string(worstDepth) + " grid units)",
-                       {{"coverage_failures", coverageFail}, {"depth_failures", depthFail}, {"visibility_failures", visibilityFail},
-                        {"same_triangle_pixels", same}, {"other_triangle_allowed", otherAllowed}}});
+      primitiveId && t.coverageFail > 0 ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " + std::string(kPrimitiveIdFinding) + ")" : "";
+  r.oracles = {occlusionOracle(t, scene.cullEveryTested), meshImageOracle(t, driverNote)};
   if (expectEmpty)
-    r.oracles.push_back({"empty", triangles == 0 ? Verdict::Pass : Verdict::Fail,
-                         std::to_string(triangles) + " triangles for an isovalue outside the data range", {}});
+    r.oracles.push_back({"empty", t.triangles == 0 ? Verdict::Pass : Verdict::Fail,
+                         std::to_string(t.triangles) + " triangles for an isovalue outside the data range", {}});
   concludeFromOracles(r);
-  if (shown.frame) showFrame(ctx, r, shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
+  if (t.shown.frame) showFrame(ctx, r, t.shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
   return r;
 }
 

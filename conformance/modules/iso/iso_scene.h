@@ -45,8 +45,8 @@ struct IsoScene {
 // scene.dims.
 void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 
-// The scene as JSON and back (fixture manifests). fromJson throws nlohmann::json exceptions that
-// name a missing key, and JsonFieldError naming the field for a value of the wrong type, an integer
+// The scene as JSON and back (fixture manifests). fromJson is strict (json_reader.h, as the other
+// scene readers): JsonFieldError naming the field for a missing or unknown key, a value of the wrong type, an integer
 // out of range (dims 1..kMaxIsoSceneExtent, the largest LEB grid; orbit frames
 // 1..kMaxIsoSceneFrames; camera width and height 1..kMaxIsoSceneImageSide; refinement budgets
 // >= 0), a data name that is no field, or an orbit camera that is degenerate at some frame.

@@ -83,14 +83,7 @@ SparseGridScene parseSparseGridScene(const nlohmann::json& j) {
     }
     c.finish();
   }
-  if (r.has("image")) {
-    const auto image = r.get<std::vector<int>>("image");
-    if (image.size() != 2 || image[0] < 1 || image[1] < 1 || image[0] > 4096 || image[1] > 4096)
-      throw SceneError("image: expected [width, height] within 1..4096");
-    s.width = image[0];
-    s.height = image[1];
-  }
-  s.planes = r.getInt("planes", s.planes, 1, 4096);
+  readFrameExtents(r, s.width, s.height, s.planes);
   r.finish();
   return s;
 }

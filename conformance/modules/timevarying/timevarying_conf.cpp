@@ -58,20 +58,39 @@ io::Rgb8Image maskPreview(const ref::RgbaStack& judged, const ref::RgbaStack& ex
 
 }  // namespace
 
-CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description, const TimeVaryingScene& scene,
-                            const TimeVaryingExpectation& expect) {
-  CaseResult result;
-  result.id = id;
-  result.system = "timevarying";
-  result.description = description;
-  auto t0 = Clock::now();
-  const auto series = ctx.cached<ref::TimeSeries>("timevarying:" + seriesKey(scene),
-                                                  [&] { return std::make_shared<ref::TimeSeries>(makeSeries(scene)); });
-  const ref::TransferFunction tf = ref::transferFunction(scene.transfer);
-  const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(*series, tf, scene.encoding);
+namespace {
+
+// What one case renders, and how: the encoded series, its frame, and what the emulation simulates.
+struct TimeVaryingRun {
+  std::shared_ptr<const ref::TimeSeries> series;
+  ref::TransferFunction tf;
+  ref::TimeVaryingTextures tex;
+  ref::PlaneFrame frame;
+  const emu::PrecisionProfile* profile = nullptr;
+  std::vector<emu::Effect> simulated;
+  std::vector<emu::Departure> departures;
+};
+
+// What the steps measured, summed: every oracle reads it.
+struct StepTally {
+  std::size_t compared = 0, mismatched = 0, wrongColours = 0, samples = 0;
+  int maxExactDiff = 0, maxIdealDiff = 0;
+  double idealSumSq = 0.0;
+  FetchCounts fetches;
+  std::vector<std::size_t> departureChanges;
+  std::string glNotRun;
+  std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;  // the first step's, for the images
+};
+
+TimeVaryingRun prepareRun(CaseContext& ctx, const TimeVaryingScene& scene, CaseResult& result) {
+  TimeVaryingRun run;
+  const auto t0 = Clock::now();
+  run.series = ctx.cached<ref::TimeSeries>("timevarying:" + seriesKey(scene), [&] { return std::make_shared<ref::TimeSeries>(makeSeries(scene)); });
+  run.tf = ref::transferFunction(scene.transfer);
+  run.tex = ref::encodeTimeVarying(*run.series, run.tf, scene.encoding);
   result.secondsReference += secondsSince(t0);
-  const ref::PlaneFrame frame = makeFrame(scene, tex.layout);
-  const ref::EncodeStats& st = tex.stats;
+  run.frame = makeFrame(scene, run.tex.layout);
+  const ref::EncodeStats& st = run.tex.stats;
   result.figures = {{"scene", toJson(scene)},
                     {"index_bytes", st.indexBytes},
                     {"refinement_bytes", st.refinementBytes},
@@ -80,164 +99,205 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
                     {"hash_hits", st.hashHits},
                     {"hash_collisions", st.hashCollisions},
                     {"alpha_one_cells", st.alphaOneCells},
-                    {"sparseness", ref::sparseness(*series)}};
-  const emu::PrecisionProfile* profile = ctx.profile();
-  std::vector<emu::Effect> simulated;
-  if (profile) {
-    simulated = emu::TimeVaryingDecoderEmu(tex, scene.decoder, *profile).effects();
-    simulated.push_back(emu::Effect::OutputUnorm8);
+                    {"sparseness", ref::sparseness(*run.series)}};
+  run.profile = ctx.profile();
+  if (run.profile) {
+    run.simulated = emu::TimeVaryingDecoderEmu(run.tex, scene.decoder, *run.profile).effects();
+    run.simulated.push_back(emu::Effect::OutputUnorm8);
     if (scene.composite)
-      for (emu::Effect e : emu::AlphaBlendEmu(*profile).effects()) simulated.push_back(e);
-    for (emu::Effect e : simulated) result.effects.emplace_back(emu::effectId(e));
+      for (emu::Effect e : emu::AlphaBlendEmu(*run.profile).effects()) run.simulated.push_back(e);
+    for (emu::Effect e : run.simulated) result.effects.emplace_back(emu::effectId(e));
+    run.departures = emu::departuresAmong(*run.profile, run.simulated);
   }
+  return run;
+}
 
-  std::size_t compared = 0, mismatched = 0, wrongColours = 0, samples = 0;
-  int maxExactDiff = 0, maxIdealDiff = 0;
-  double idealSumSq = 0.0;
-  FetchCounts fetches;
-  std::vector<std::size_t> departureChanges;
-  const std::vector<emu::Departure> departures = profile ? emu::departuresAmong(*profile, simulated) : std::vector<emu::Departure>{};
-  departureChanges.assign(departures.size(), 0);
-  std::string glNotRun;
-  std::optional<ref::RgbaStack> firstGl, firstEmu, firstExact;
-  TimeVaryingEnvelopeOracle envelopeOracle(tex, scene.decoder, frame, scene.composite);
-  std::vector<PixelFlag> flags(static_cast<std::size_t>(frame.width) * frame.height, PixelFlag::None);
-  const std::vector<int> steps = stepsOf(scene);
-  for (int step : steps) {
-    std::optional<ref::RgbaStack> gl;
-    if (ctx.gl() && glNotRun.empty()) try {
-        t0 = Clock::now();
-        gl = scene.composite ? gpu::compositeGl(*ctx.gl(), tex, scene.decoder, step, frame, {}, ctx.shaderOverride())
-                             : gpu::decodePlanesGl(*ctx.gl(), tex, scene.decoder, step, frame, {}, ctx.shaderOverride());
-        result.secondsGl += secondsSince(t0);
-      } catch (const gpu::GlUnsupported& e) {
-        glNotRun = e.what();
-      }
-    else if (!ctx.gl())
-      glNotRun = "no GL context in this run";
-    std::optional<ref::RgbaStack> emulated;
-    if (profile) {
-      t0 = Clock::now();
-      const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(tex, scene.decoder, step, frame, *profile, ctx.threads());
-      emulated = scene.composite ? emu::emulateComposite(tex, scene.decoder, step, frame, *profile, ctx.threads()) : decoded.colours;
-      result.secondsEmulation += secondsSince(t0);
-      fetches.add(classifyFetches(tex, *series, tf, step, frame, decoded));
-    }
-    t0 = Clock::now();
-    const ref::RgbaStack exact = ref::exactColours(*series, tf, step, frame);
-    ref::RgbaStack reference = exact;
-    if (scene.composite) {
-      const auto ideal = ref::idealComposite(exact, frame);
-      reference = {frame.width, frame.height, 1, {}};
-      for (const auto& c : ideal)
-        reference.colours.push_back({static_cast<std::uint8_t>(std::lround(c[0])), static_cast<std::uint8_t>(std::lround(c[1])),
-                                     static_cast<std::uint8_t>(std::lround(c[2])), static_cast<std::uint8_t>(std::lround(c[3]))});
-      if (gl)
-        for (std::size_t i = 0; i < ideal.size(); ++i)
-          for (int c = 0; c < 4; ++c) {
-            const double d = gl->colours[i][c] - ideal[i][c];
-            idealSumSq += d * d;
-            maxIdealDiff = std::max(maxIdealDiff, static_cast<int>(std::ceil(std::fabs(d) - 1e-9)));
-          }
-    }
-    result.secondsReference += secondsSince(t0);
-    if (gl)
-      for (std::size_t d = 0; d < departures.size(); ++d) {
-        const ref::RgbaStack semantics =
-            scene.composite
-                ? emu::emulateComposite(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads(), departures[d].flushEachPass)
-                : emu::emulateDecodePlanes(tex, scene.decoder, step, frame, departures[d].semantics, ctx.threads()).colours;
-        for (std::size_t i = 0; i < gl->colours.size(); ++i) departureChanges[d] += gl->colours[i] != semantics.colours[i];
-      }
-    const ref::RgbaStack* judged = gl ? &*gl : emulated ? &*emulated : nullptr;
-    if (gl && emulated)
-      for (std::size_t i = 0; i < gl->colours.size(); ++i) {
-        ++compared;
-        if (gl->colours[i] != emulated->colours[i]) {
-          ++mismatched;
-          maxExactDiff = std::max(maxExactDiff, largestChannelDifference(gl->colours[i], emulated->colours[i]).difference);
-        }
-      }
-    if (judged && !scene.composite)
-      for (std::size_t i = 0; i < judged->colours.size(); ++i) {
-        ++samples;
-        if (judged->colours[i] != reference.colours[i]) {
-          ++wrongColours;
-          maxIdealDiff = std::max(maxIdealDiff, largestChannelDifference(judged->colours[i], reference.colours[i]).difference);
-        }
-      }
-    if (scene.composite && judged) samples += judged->colours.size();
-    envelopeOracle.add(step, gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, ctx.threads(), firstExact ? nullptr : &flags);
-    if (!firstExact) {
-      firstExact = reference;
-      if (gl) firstGl = gl;
-      if (emulated) firstEmu = emulated;
-    }
+// The GL decode or composite of one step; nothing (and why, in tally.glNotRun) where GL cannot run it.
+std::optional<ref::RgbaStack> renderStepGl(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, StepTally& tally,
+                                           CaseResult& result) {
+  if (!ctx.gl()) {
+    tally.glNotRun = "no GL context in this run";
+    return std::nullopt;
   }
+  if (!tally.glNotRun.empty()) return std::nullopt;
+  try {
+    const auto t0 = Clock::now();
+    std::optional<ref::RgbaStack> gl =
+        scene.composite ? gpu::compositeGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride())
+                        : gpu::decodePlanesGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride());
+    result.secondsGl += secondsSince(t0);
+    return gl;
+  } catch (const gpu::GlUnsupported& e) {
+    tally.glNotRun = e.what();
+    return std::nullopt;
+  }
+}
 
-  for (std::size_t d = 0; d < departures.size(); ++d)
-    result.findings.push_back({std::string(departures[d].id), std::string(departures[d].description),
-                               {{"samples_changed", departureChanges[d]}, {"pixels_compared", samples}}});
-  OracleResult exact{"exact", Verdict::NotRun, "", nlohmann::json::object()};
-  if (!glNotRun.empty() || !profile) {
-    exact.summary = !glNotRun.empty() ? "GL not run: " + glNotRun : "no precision profile for this driver";
-  } else {
-    exact.verdict = mismatched ? Verdict::Fail : Verdict::Pass;
-    exact.figures = {{"compared_samples", compared}, {"mismatched_samples", mismatched}, {"mismatched_pixels", mismatched},
-                     {"max_abs_diff_lsb", maxExactDiff}, {"steps", steps.size()}};
-    exact.summary = std::to_string(mismatched) + " of " + std::to_string(compared) + " RGBA samples differ over " +
-                    std::to_string(steps.size()) + " time step(s)";
+// The right answer of one step: the exact colours, or for a composite the ideal composite rounded
+// to codes (whose real-valued distance to GL goes into the tally).
+ref::RgbaStack referenceOfStep(const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, const ref::RgbaStack* gl, StepTally& tally) {
+  const ref::RgbaStack exact = ref::exactColours(*run.series, run.tf, step, run.frame);
+  if (!scene.composite) return exact;
+  const auto ideal = ref::idealComposite(exact, run.frame);
+  ref::RgbaStack reference{run.frame.width, run.frame.height, 1, {}};
+  for (const auto& c : ideal)
+    reference.colours.push_back({static_cast<std::uint8_t>(std::lround(c[0])), static_cast<std::uint8_t>(std::lround(c[1])),
+                                 static_cast<std::uint8_t>(std::lround(c[2])), static_cast<std::uint8_t>(std::lround(c[3]))});
+  if (gl)
+    for (std::size_t i = 0; i < ideal.size(); ++i)
+      for (int c = 0; c < 4; ++c) {
+        const double d = gl->colours[i][c] - ideal[i][c];
+        tally.idealSumSq += d * d;
+        tally.maxIdealDiff = std::max(tally.maxIdealDiff, static_cast<int>(std::ceil(std::fabs(d) - 1e-9)));
+      }
+  return reference;
+}
+
+// How many of GL's samples each departure changes: GL against the emulation without it.
+void countDepartures(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, const ref::RgbaStack& gl, StepTally& tally) {
+  for (std::size_t d = 0; d < run.departures.size(); ++d) {
+    const emu::Departure& dep = run.departures[d];
+    const ref::RgbaStack semantics = scene.composite
+                                         ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads(), dep.flushEachPass)
+                                         : emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads()).colours;
+    for (std::size_t i = 0; i < gl.colours.size(); ++i) tally.departureChanges[d] += gl.colours[i] != semantics.colours[i];
   }
-  OracleResult fetch{"fetch", Verdict::NotRun, "", nlohmann::json::object()};
-  if (profile) {
-    fetch.figures = fetches.toJson();
-    const bool clean = fetches.wrong() == 0 && fetches.wrongColour == 0;
-    fetch.verdict = expect.everyFetchRight ? (clean ? Verdict::Pass : Verdict::Fail)
-                    : expect.trapReproduced ? (fetches.wrongColour > 0 ? Verdict::Pass : Verdict::Fail)
+}
+
+// GL against the emulation (exact oracle) and the judged colours against the right ones (ideal).
+void compareStep(const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const ref::RgbaStack& reference, bool composite, StepTally& tally) {
+  if (gl && emulated)
+    for (std::size_t i = 0; i < gl->colours.size(); ++i) {
+      ++tally.compared;
+      if (gl->colours[i] != emulated->colours[i]) {
+        ++tally.mismatched;
+        tally.maxExactDiff = std::max(tally.maxExactDiff, largestChannelDifference(gl->colours[i], emulated->colours[i]).difference);
+      }
+    }
+  const ref::RgbaStack* judged = gl ? gl : emulated;
+  if (!judged) return;
+  if (composite) {
+    tally.samples += judged->colours.size();
+    return;
+  }
+  for (std::size_t i = 0; i < judged->colours.size(); ++i) {
+    ++tally.samples;
+    if (judged->colours[i] != reference.colours[i]) {
+      ++tally.wrongColours;
+      tally.maxIdealDiff = std::max(tally.maxIdealDiff, largestChannelDifference(judged->colours[i], reference.colours[i]).difference);
+    }
+  }
+}
+
+// One time step through GL, the emulation and the reference, into the tally and the envelope.
+void measureStep(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, StepTally& tally,
+                 TimeVaryingEnvelopeOracle& envelope, std::vector<PixelFlag>& flags, CaseResult& result) {
+  const std::optional<ref::RgbaStack> gl = renderStepGl(ctx, run, scene, step, tally, result);
+  std::optional<ref::RgbaStack> emulated;
+  if (run.profile) {
+    const auto t0 = Clock::now();
+    const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads());
+    emulated = scene.composite ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads()) : decoded.colours;
+    result.secondsEmulation += secondsSince(t0);
+    tally.fetches.add(classifyFetches(run.tex, *run.series, run.tf, step, run.frame, decoded));
+  }
+  const auto t0 = Clock::now();
+  const ref::RgbaStack reference = referenceOfStep(run, scene, step, gl ? &*gl : nullptr, tally);
+  result.secondsReference += secondsSince(t0);
+  if (gl) countDepartures(ctx, run, scene, step, *gl, tally);
+  compareStep(gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, scene.composite, tally);
+  envelope.add(step, gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, ctx.threads(), tally.firstExact ? nullptr : &flags);
+  if (!tally.firstExact) {
+    tally.firstExact = reference;
+    tally.firstGl = gl;
+    tally.firstEmu = emulated;
+  }
+}
+
+OracleResult exactOracle(const StepTally& t, std::size_t steps, bool haveProfile) {
+  if (!t.glNotRun.empty() || !haveProfile)
+    return {"exact", Verdict::NotRun, !t.glNotRun.empty() ? "GL not run: " + t.glNotRun : "no precision profile for this driver", nlohmann::json::object()};
+  return {"exact", t.mismatched ? Verdict::Fail : Verdict::Pass,
+          std::to_string(t.mismatched) + " of " + std::to_string(t.compared) + " RGBA samples differ over " + std::to_string(steps) + " time step(s)",
+          {{"compared_samples", t.compared}, {"mismatched_samples", t.mismatched}, {"mismatched_pixels", t.mismatched},
+           {"max_abs_diff_lsb", t.maxExactDiff}, {"steps", steps}}};
+}
+
+OracleResult fetchOracle(const FetchCounts& f, const TimeVaryingExpectation& expect, bool haveProfile) {
+  if (!haveProfile) return {"fetch", Verdict::NotRun, "no precision profile: the fetches are known only through the emulation", nlohmann::json::object()};
+  const bool clean = f.wrong() == 0 && f.wrongColour == 0;
+  const Verdict v = expect.everyFetchRight ? (clean ? Verdict::Pass : Verdict::Fail)
+                    : expect.trapReproduced ? (f.wrongColour > 0 ? Verdict::Pass : Verdict::Fail)
                                             : Verdict::Info;
-    fetch.summary = std::to_string(fetches.wrong()) + " of " + std::to_string(fetches.samples) + " fetches wrong (" +
-                    std::to_string(fetches.wrongBlock) + " wrong block, " + std::to_string(fetches.wrongVoxel) + " wrong voxel; " +
-                    std::to_string(fetches.atCoordinateOne) + " at 1.0, " + std::to_string(fetches.onBlockFace) + " on block faces, " +
-                    std::to_string(fetches.onVoxelFace) + " on voxel faces, " + std::to_string(fetches.inside) + " inside); " +
-                    std::to_string(fetches.wrongColour) + " wrong colours" +
-                    (expect.everyFetchRight ? " (must be 0)" : expect.trapReproduced ? " (the paper's trap must show)" : "");
-  } else {
-    fetch.summary = "no precision profile: the fetches are known only through the emulation";
+  return {"fetch", v,
+          std::to_string(f.wrong()) + " of " + std::to_string(f.samples) + " fetches wrong (" + std::to_string(f.wrongBlock) + " wrong block, " +
+              std::to_string(f.wrongVoxel) + " wrong voxel; " + std::to_string(f.atCoordinateOne) + " at 1.0, " + std::to_string(f.onBlockFace) +
+              " on block faces, " + std::to_string(f.onVoxelFace) + " on voxel faces, " + std::to_string(f.inside) + " inside); " +
+              std::to_string(f.wrongColour) + " wrong colours" +
+              (expect.everyFetchRight ? " (must be 0)" : expect.trapReproduced ? " (the paper's trap must show)" : ""),
+          f.toJson()};
+}
+
+OracleResult idealOracle(const StepTally& t, bool composite) {
+  if (composite) {
+    const double rmse = t.samples ? std::sqrt(t.idealSumSq / (4.0 * static_cast<double>(t.samples))) : 0.0;
+    return {"ideal", Verdict::Info,
+            "composited image vs the exact colours composited in real arithmetic: max " + std::to_string(t.maxIdealDiff) + " LSB, RMSE " +
+                std::to_string(rmse) + " LSB",
+            {{"max_abs_diff_lsb", t.maxIdealDiff}, {"rmse", rmse}, {"pixels", t.samples}}};
   }
-  OracleResult ideal{"ideal", Verdict::Info, "", nlohmann::json::object()};
-  if (scene.composite) {
-    const double rmse = samples ? std::sqrt(idealSumSq / (4.0 * static_cast<double>(samples))) : 0.0;
-    ideal.figures = {{"max_abs_diff_lsb", maxIdealDiff}, {"rmse", rmse}, {"pixels", samples}};
-    ideal.summary = "composited image vs the exact colours composited in real arithmetic: max " + std::to_string(maxIdealDiff) +
-                    " LSB, RMSE " + std::to_string(rmse) + " LSB";
-  } else {
-    ideal.figures = {{"wrong_colours", wrongColours}, {"samples", samples}, {"max_abs_diff_lsb", maxIdealDiff}, {"rmse", nullptr}};
-    ideal.summary = std::to_string(wrongColours) + " of " + std::to_string(samples) + " samples decode another colour than the exact decoder" +
-                    (wrongColours ? " (max channel difference " + std::to_string(maxIdealDiff) + ")" : "");
+  return {"ideal", Verdict::Info,
+          std::to_string(t.wrongColours) + " of " + std::to_string(t.samples) + " samples decode another colour than the exact decoder" +
+              (t.wrongColours ? " (max channel difference " + std::to_string(t.maxIdealDiff) + ")" : ""),
+          {{"wrong_colours", t.wrongColours}, {"samples", t.samples}, {"max_abs_diff_lsb", t.maxIdealDiff}, {"rmse", nullptr}}};
+}
+
+// The first step's images: GL, emulated, the right answer, and the error mask.
+void writeImages(CaseContext& ctx, CaseResult& result, const StepTally& t, bool composite, const std::vector<PixelFlag>& flags) {
+  const int plane = composite ? 0 : t.firstExact->planes / 2;
+  io::ensureDirectory(ctx.outDir() / "images");
+  auto write = [&](const ref::RgbaStack& s, const std::string& kind, std::string& slot) {
+    slot = caseImageName(result.id, kind);
+    io::writePng(ctx.outDir() / slot, rgbPreview(s, plane));
+  };
+  if (t.firstGl) write(*t.firstGl, "rendered", result.images.rendered);
+  if (t.firstEmu) write(*t.firstEmu, "emulated", result.images.emulated);
+  write(*t.firstExact, "reference", result.images.reference);
+  if (t.firstGl || t.firstEmu) {
+    result.images.errorMask = caseImageName(result.id, "error_mask");
+    io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(t.firstGl ? *t.firstGl : *t.firstEmu, *t.firstExact, plane, flags));
   }
-  const OracleResult envelope = envelopeOracle.result();
-  result.worstPixels = envelopeOracle.worstPixels();
-  result.oracles = {exact, envelope, fetch, ideal};
+}
+
+}  // namespace
+
+CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description, const TimeVaryingScene& scene,
+                            const TimeVaryingExpectation& expect) {
+  CaseResult result;
+  result.id = id;
+  result.system = "timevarying";
+  result.description = description;
+  const TimeVaryingRun run = prepareRun(ctx, scene, result);
+  StepTally tally;
+  tally.departureChanges.assign(run.departures.size(), 0);
+  TimeVaryingEnvelopeOracle envelope(run.tex, scene.decoder, run.frame, scene.composite);
+  std::vector<PixelFlag> flags(static_cast<std::size_t>(run.frame.width) * run.frame.height, PixelFlag::None);
+  const std::vector<int> steps = stepsOf(scene);
+  for (int step : steps) measureStep(ctx, run, scene, step, tally, envelope, flags, result);
+
+  for (std::size_t d = 0; d < run.departures.size(); ++d)
+    result.findings.push_back({std::string(run.departures[d].id), std::string(run.departures[d].description),
+                               {{"samples_changed", tally.departureChanges[d]}, {"pixels_compared", tally.samples}}});
+  result.worstPixels = envelope.worstPixels();
+  result.oracles = {exactOracle(tally, steps.size(), run.profile != nullptr), envelope.result(),
+                    fetchOracle(tally.fetches, expect, run.profile != nullptr), idealOracle(tally, scene.composite)};
   concludeFromOracles(result);
-  if (!glNotRun.empty() && ctx.gl()) {
+  if (!tally.glNotRun.empty() && ctx.gl()) {
     result.status = Status::Skip;
-    result.message = glNotRun;
+    result.message = tally.glNotRun;
   }
-  if ((ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn) && firstExact) {
-    const int plane = scene.composite ? 0 : firstExact->planes / 2;
-    io::ensureDirectory(ctx.outDir() / "images");
-    auto write = [&](const ref::RgbaStack& s, const std::string& kind, std::string& slot) {
-      slot = caseImageName(id, kind);
-      io::writePng(ctx.outDir() / slot, rgbPreview(s, plane));
-    };
-    if (firstGl) write(*firstGl, "rendered", result.images.rendered);
-    if (firstEmu) write(*firstEmu, "emulated", result.images.emulated);
-    write(*firstExact, "reference", result.images.reference);
-    if (firstGl || firstEmu) {
-      result.images.errorMask = caseImageName(id, "error_mask");
-      io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(firstGl ? *firstGl : *firstEmu, *firstExact, plane, flags));
-    }
-  }
+  if ((ctx.writeAllImages() || result.status == Status::Fail || result.status == Status::Warn) && tally.firstExact)
+    writeImages(ctx, result, tally, scene.composite, flags);
   return result;
 }
 

@@ -41,14 +41,7 @@ TimeVaryingScene parseTimeVaryingScene(const nlohmann::json& j) {
   if (s.frame != "voxel_centres" && s.frame != "voxel_faces" && s.frame != "face_ulps" && s.frame != "block_faces" && s.frame != "coordinate_one" &&
       s.frame != "orbit")
     throw JsonFieldError("frame: '" + s.frame + "' is not one of voxel_centres, voxel_faces, face_ulps, block_faces, coordinate_one, orbit");
-  if (r.has("image")) {
-    const auto image = r.get<std::vector<int>>("image");
-    if (image.size() != 2 || image[0] < 1 || image[1] < 1 || image[0] > 4096 || image[1] > 4096)
-      throw JsonFieldError("image: expected [width, height] within 1..4096");
-    s.width = image[0];
-    s.height = image[1];
-  }
-  s.planes = r.getInt("planes", s.planes, 1, 4096);
+  readFrameExtents(r, s.width, s.height, s.planes);
   s.onlySteps = r.get<std::vector<int>>("only_steps", {});
   for (int t : s.onlySteps)
     if (t < 0 || t >= s.steps) throw JsonFieldError("only_steps: " + std::to_string(t) + " is outside 0.." + std::to_string(s.steps - 1));

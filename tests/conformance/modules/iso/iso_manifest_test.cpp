@@ -50,7 +50,14 @@ TEST(IsoManifest, ErrorsAreFormatErrorsNamingTheField) {
   EXPECT_NE(errorOf(m).find("files[0].sha256: expected 64 lowercase hexadecimal digits"), std::string::npos);
   m = good;
   m["scenes"][1].erase("isovalue");
-  EXPECT_NE(errorOf(m).find("scenes[1]: [json.exception.out_of_range.403] key 'isovalue' not found"), std::string::npos);
+  EXPECT_NE(errorOf(m).find("scenes[1].isovalue: missing"), std::string::npos) << errorOf(m);
+  // Unknown keys are refused, as in the other scene readers (json_reader.h).
+  m = good;
+  m["scenes"][0]["colour"] = "red";
+  EXPECT_NE(errorOf(m).find("scenes[0].colour: unknown key"), std::string::npos) << errorOf(m);
+  m = good;
+  m["scenes"][0]["camera"]["zoom"] = 2;
+  EXPECT_NE(errorOf(m).find("scenes[0].camera.zoom: unknown key"), std::string::npos) << errorOf(m);
 }
 
 // Found by tests/fuzz/fixture_manifest_fuzz.cpp (tests/fuzz/regressions/fixture_manifest and
@@ -70,7 +77,7 @@ TEST(IsoManifest, FuzzRegressions) {
   m["scenes"][0]["dims"] = {65, 65, 2000};
   EXPECT_NE(errorOf(m).find("scenes[0].dims[2]: 2000 is outside 1..1025"), std::string::npos);
   m["scenes"][0]["dims"] = {65, 65};
-  EXPECT_NE(errorOf(m).find("scenes[0].dims: expected 3 extents"), std::string::npos);
+  EXPECT_NE(errorOf(m).find("scenes[0].dims: expected 3 integers"), std::string::npos);
   m = good;
   m["scenes"][0]["orbit"]["frames"] = -1;
   EXPECT_NE(errorOf(m).find("scenes[0].orbit.frames: -1 is outside 1..10000"), std::string::npos);
