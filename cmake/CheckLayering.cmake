@@ -1,5 +1,5 @@
 cmake_minimum_required(VERSION 3.25)
-# Script mode (ctest `layering`): the #include lines of every layer respect DESIGN.md's rules,
+# Script mode (ctest `layering`): the #include lines of every layer respect docs/design.md's rules,
 # the same rules target_link_libraries enforces at link time:
 #   reference/   includes only reference/ (and the standard library, GLM)
 #   emulation/   includes reference/ and emulation/
@@ -34,4 +34,4 @@ if(violations)
   string(REPLACE ";" "\n" text "${violations}")
   message(FATAL_ERROR "layering violations:\n${text}")
 endif()
-message("layering: reference, emulation, gpu and fixtures include only what DESIGN.md allows")
+message("layering: reference, emulation, gpu and fixtures include only what docs/design.md allows")

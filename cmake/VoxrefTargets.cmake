@@ -6,7 +6,7 @@ function(voxref_warnings target)
 endfunction()
 
 # reference/ and emulation/ must compute bit-exact results: no contraction of a*b+c into a fused
-# multiply-add, no fast-math, no -march=native (DESIGN.md, Conventions); x86-64 evaluates in SSE
+# multiply-add, no fast-math, no -march=native (docs/design.md, Conventions); x86-64 evaluates in SSE
 # registers, so there is no excess precision either. Where an emulated driver
 # fuses, the code calls std::fma explicitly.
 function(voxref_exact_arithmetic target)

@@ -1,4 +1,4 @@
-// Effects: the stages of a GL pipeline that can change a bit of the output (DESIGN.md, "Scenes
+// Effects: the stages of a GL pipeline that can change a bit of the output (docs/design.md, "Scenes
 // and effects"). The emulator derives the list from the scene's GL state and the profile and
 // composes only those stages; every case records the list it simulated.
 #pragma once

@@ -1,6 +1,6 @@
 // float32 arithmetic as the GL drivers compute it, one named function per operation whose bits
 // matter. Every function is bit-exact against Mesa 22.3.6 (llvmpipe, softpipe) as documented in
-// PRECISION.md and verified by the conformance cases; citations are to the Mesa sources.
+// docs/precision.md and verified by the conformance cases; citations are to the Mesa sources.
 //
 // Compiled with -ffp-contract=off: every C++ float operation below rounds once, to nearest even.
 #pragma once

@@ -1,5 +1,5 @@
 // One framebuffer pixel under blending with factors ONE / ONE, as a GL implementation stores and
-// blends it, under a precision profile. Bit-exact against Mesa 22.3.6 (PRECISION.md):
+// blends it, under a precision profile. Bit-exact against Mesa 22.3.6 (docs/precision.md):
 //
 // QuantizePerPass (llvmpipe; the GL semantics of a fixed-point colour buffer):
 //   unorm b bits   src code = clamp(RNE(fl(x (2^b - 1)))), then saturating integer

@@ -1,8 +1,8 @@
-// Precision profiles: what a GL implementation computes, as named data (DESIGN.md).
+// Precision profiles: what a GL implementation computes, as named data (docs/design.md).
 //
 // A profile selects, for every stage whose bits can differ between implementations, one of the
 // arithmetic variants the emulator implements (each implemented once, in the stage's file). The
-// values of the Mesa 22.3.6 profiles come from PRECISION.md and from reading the Debian 22.3.6
+// values of the Mesa 22.3.6 profiles come from docs/precision.md and from reading the Debian 22.3.6
 // sources (texture sampling: gallivm lp_bld_sample_soa.c / lp_bld_sample_aos.c, softpipe
 // sp_tex_sample.c; framebuffers: lp_state_fs.c, lp_bld_blend.c, sp_quad_blend.c,
 // sp_tile_cache.c); the conformance cases `sparsegrid.*` verify them bit for bit.

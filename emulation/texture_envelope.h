@@ -1,5 +1,5 @@
 // The envelope: what ANY conforming GL implementation may return for a texture lookup, as an
-// interval (the spec model of DESIGN.md, after Khronos dEQP tcuTexLookupVerifier.cpp).
+// interval (the spec model of docs/design.md, after Khronos dEQP tcuTexLookupVerifier.cpp).
 //
 // Precision model (every number has its source):
 //  - the shader computes the coordinate u = (p 2^l + 0.5) / D; GLSL 4.60 section 4.7.1 allows

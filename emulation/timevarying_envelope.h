@@ -2,7 +2,7 @@
 // decoder_variants.h): the RGBA8 values ANY conforming GL implementation may read back for a
 // sample, decoded by the shaders of gpu/shaders/timevarying_*.frag, alone (decode planes) or
 // composited back to front with SRC_ALPHA / ONE_MINUS_SRC_ALPHA into RGBA8. The dEQP-style model of
-// DESIGN.md ("envelope"), after tcuTexLookupVerifier.cpp; every rule has its source:
+// docs/design.md ("envelope"), after tcuTexLookupVerifier.cpp; every rule has its source:
 //
 //  - shader arithmetic: interval arithmetic of interval_arithmetic.h (GLSL 4.60 section 4.7.1):
 //    + - * correctly rounded, division 2.5 ULP (`divisionUlps`), mod(x, y) = x - y floor(x / y)

@@ -16,7 +16,7 @@ namespace voxref::gpu {
 struct CombinationGlOptions {
   // glFinish after every pass. Real hardware and llvmpipe quantize the framebuffer after every
   // blend anyway; softpipe keeps float colours in its tile cache until a flush, so this is how to
-  // obtain the per-pass semantics from it (a finding of voxref, see PRECISION.md).
+  // obtain the per-pass semantics from it (a finding of voxref, see docs/precision.md).
   bool flushEachPass = false;
   // A user's fragment shader in place of combination.frag (shader_override.h); nullptr or
   // another stage's: the built-in shader.

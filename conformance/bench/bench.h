@@ -56,8 +56,8 @@ Timing measureOnce(const std::function<void()>& fn);
 std::string formatNumber(const char* format, double v);
 
 // Runs the benchmarks whose id matches the filter (the study, study.h, is study.*), writes
-// out/bench.md, out/results.json and out/index.html (bench_html.h) and, per study group, an
-// accuracy-against-time plot in out/plots (plots.h), and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
+// bench.md, results.json and index.html (bench_html.h) into the output folder and, per study
+// group, an accuracy-against-time plot into its plots/ (plots.h), and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
 // (gnuplot missing or failing: the tables are still written and the markdown says why).
 // Throws UsageError when nothing matches.
 int runBenchmarks(const BenchOptions& options, std::ostream& out);

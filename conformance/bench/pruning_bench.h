@@ -1,4 +1,4 @@
-// Effect pruning measured (issue 7; DESIGN.md, "Scenes and effects"): built-in scenes emulated
+// Effect pruning measured (issue 7; docs/design.md, "Scenes and effects"): built-in scenes emulated
 // with only the stages they call for and with every skipped stage forced on (forceAllEffects),
 // side by side in one run: the time of each, the ratio, and that the bits are identical.
 // `voxref bench --filter 'pruning*'`.

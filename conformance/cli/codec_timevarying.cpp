@@ -16,7 +16,7 @@ namespace {
 ref::TimeSeries loadSeries(const EncodeOptions& o) {
   if (o.plume) {
     if (!o.inputs.empty()) throw conf::UsageError("--plume and --input exclude each other");
-    // The container's limits (FORMAT.md: side 4..512, time_steps 1..65536), checked before the
+    // The container's limits (reference/timevarying/FORMAT.md: side 4..512, time_steps 1..65536), checked before the
     // plume is allocated (side^3 bytes per step).
     if (o.plumeSide < 8 || o.plumeSide > 512 || (o.plumeSide & (o.plumeSide - 1)) != 0)
       throw conf::UsageError("--side " + std::to_string(o.plumeSide) + ": expected a power of two in 8..512 (the .vxtv container holds sides up to 512)");
@@ -28,7 +28,7 @@ ref::TimeSeries loadSeries(const EncodeOptions& o) {
   }
   if (o.inputs.empty()) throw conf::UsageError("give the time steps with --input FILE... (and --dims X Y Z), or --plume");
   if (o.inputs.size() > 65536)  // before any file is read
-    throw conf::UsageError("--input: " + std::to_string(o.inputs.size()) + " time steps; the .vxtv container holds 1..65536 (FORMAT.md, time_steps)");
+    throw conf::UsageError("--input: " + std::to_string(o.inputs.size()) + " time steps; the .vxtv container holds 1..65536 (reference/timevarying/FORMAT.md, time_steps)");
   if (o.dims.size() != 3) throw conf::UsageError("--dims needs three extents X Y Z");
   if (o.type != "uint8") throw conf::UsageError("the timevarying codec takes uint8 volumes (--type uint8), got " + o.type);
   const ref::Dims3 dims{o.dims[0], o.dims[1], o.dims[2]};

@@ -1,4 +1,4 @@
-// A conformance case and what it reports (DESIGN.md, "Three oracles, one report").
+// A conformance case and what it reports (docs/design.md, "Three oracles, one report").
 //
 // A case runs one scene through gpu/, emulation/ and reference/ and hands back, per oracle, a
 // verdict with its figures; the runner (runner.h) turns results into results.json, junit.xml

@@ -19,7 +19,7 @@ CpuFlags detectCpuFlags() {
 }
 
 const emu::PrecisionProfile* chooseProfile(const std::string& choice, const gpu::ContextInfo& info, std::string& how) {
-  if (choice == "envelope") {  // DESIGN.md: `envelope` is the spec model, no driver's arithmetic
+  if (choice == "envelope") {  // docs/design.md: `envelope` is the spec model, no driver's arithmetic
     how = "named on the command line: envelope, the spec model alone; judged by the envelope oracle alone";
     return nullptr;
   }

@@ -1,4 +1,4 @@
-// The identity of the driver under test, as every report records it (PRECISION.md: renderer
+// The identity of the driver under test, as every report records it (docs/precision.md: renderer
 // and version strings, environment pins, CPU flags) and the profile chosen for it.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Running a selection of cases on one driver and writing the report (DESIGN.md, `voxref conform`).
+// Running a selection of cases on one driver and writing the report (docs/design.md, `voxref conform`).
 //
 // Every case runs in its own process (isolation/child_processes.h) with a time limit, so a
 // driver that crashes, aborts or hangs costs that case a `crash` or `timeout` status, with the

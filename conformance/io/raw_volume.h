@@ -1,5 +1,5 @@
-// Raw volume files: a headerless array of voxels, x fastest (the layout of
-// ../shared/data/volumes/SOURCES.md), optionally gzip-compressed (".gz").
+// Raw volume files: a headerless array of voxels, x fastest (the layout of the real CT and
+// simulation volumes the tests and the bench read), optionally gzip-compressed (".gz").
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,6 @@
 // The sample point of this fragment on a plane frame (reference/common/plane_frame.h), derived
 // from gl_FragCoord (exactly pixel + 0.5) instead of an interpolated varying, whose bits depend on
-// the driver's fused multiply-adds (PRECISION.md). On voxref's plane-frame lattice every operation
+// the driver's fused multiply-adds (docs/precision.md). On voxref's plane-frame lattice every operation
 // here is exact in float32, whatever a compiler reassociates or fuses.
 uniform vec3 planeOrigin;  // sample point of pixel (0, 0) minus half a pixel step in x and y
 uniform vec3 pixelDx;      // step between horizontally adjacent pixels

@@ -1,6 +1,6 @@
 // Work split over threads without changing any result: items are independent and each is
 // computed by the same code whatever thread takes it, so outputs are identical for every thread
-// count (DEVELOPERS.md: deterministic on every run and thread count).
+// count (docs/design.md: deterministic on every run and thread count).
 #pragma once
 
 #include <functional>

@@ -1,5 +1,5 @@
-// A dense 3D array of samples, x fastest (offset = x + X * (y + Y * z)), as in the raw volume
-// files of ../shared/data/volumes.
+// A dense 3D array of samples, x fastest (offset = x + X * (y + Y * z)), as in raw volume files
+// (conformance/io/raw_volume.h).
 #pragma once
 
 #include <array>

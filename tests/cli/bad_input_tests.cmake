@@ -73,7 +73,7 @@ voxref_expect(badinput.good.report COMMAND "${voxref_bin}|conform|--filter|spars
               EXIT 0 SETS bi_report NEEDS bi_clean LABELS "badinput;cli;sanitize")
 voxref_expect(badinput.good.fixtures COMMAND "${voxref_bin}|fixtures|generate|--dir|${good}/fx|--scene|blobs_not_a_cube|--frames|1"
               EXIT 0 SETS bi_fixtures NEEDS bi_clean LABELS "badinput;cli;sanitize")
-# Scenes of both systems that `voxref render` reads (SCENE.md; timevarying_scene.h), rendered once
+# Scenes of both systems that `voxref render` reads (conformance/modules/sparsegrid/SCENE.md; timevarying_scene.h), rendered once
 # to show they are good.
 file(WRITE "${bi}/scenes/sparsegrid.json"
   "{\"system\": \"sparsegrid\", \"data\": {\"volume\": \"${good}/steps/step_000.rgba\", \"dims\": [32, 32, 16]}, \"level\": 3, \"image\": [8, 8], \"planes\": 4}\n")
@@ -88,7 +88,7 @@ set(tv_decode "${voxref_bin}|decode|--codec|timevarying|--input")
 set(leb_decode "${voxref_bin}|decode|--codec|leb|--input")
 set(thirteen_digits "[0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9][0-9]")
 
-# --- .vxtv (conform/io/timevarying/FORMAT.md) through `voxref decode`: the output folder must not
+# --- .vxtv (reference/timevarying/FORMAT.md) through `voxref decode`: the output folder must not
 # appear, or (PRE) keep its earlier step file unchanged. Header offsets: magic 0, version 4, flags
 # 6, side 8, time_steps 12, level 16, cells 20, block_side 24, index_slots 28, block_slots 32,
 # encoding 48, distinct_blocks 52, homogeneous 56, refined 64; the transfer function at 96 (name

@@ -11,7 +11,7 @@ TEST(UnormToFloat, MultipliesByTheRoundedReciprocal) {
   // fl(1/255) = 0x1.010102p-8 and fl(1/65535) = 0x1.0001p-16, written out by hand.
   for (std::uint32_t k = 0; k < 256; ++k) ASSERT_EQ(unormToFloat(k, 8), static_cast<float>(k) * 0x1.010102p-8f);
   for (std::uint32_t k = 0; k < 65536; k += 257) ASSERT_EQ(unormToFloat(k, 16), static_cast<float>(k) * 0x1.0001p-16f);
-  // Measured on Mesa (research note, PRECISION.md): 126 of the 256 codes differ from the correctly
+  // Measured on Mesa (research note, docs/precision.md): 126 of the 256 codes differ from the correctly
   // rounded k / 255.
   int differ = 0;
   for (std::uint32_t k = 0; k < 256; ++k) differ += unormToFloat(k, 8) != static_cast<float>(k) / 255.0f;
@@ -68,7 +68,7 @@ TEST(RoundHalfEvenToInt, Ties) {
 TEST(GlslMod, XMinusYFloorXOverY) {
   EXPECT_EQ(glslMod(5.5f, 2.0f), 1.5f);
   EXPECT_EQ(glslMod(-1.0f, 3.0f), 2.0f);  // floor, not trunc: Cg's fmod would give -1
-  // mod(k*y, y) may be about 0 or about y (PRECISION.md); here x / y rounds up to exactly 3.
+  // mod(k*y, y) may be about 0 or about y (docs/precision.md); here x / y rounds up to exactly 3.
   EXPECT_EQ(glslMod(0.3f, 0.1f), 0.3f - 0.1f * 3.0f);
 }
 

@@ -18,7 +18,7 @@ std::uint32_t blendAll(FramebufferFormat f, const PrecisionProfile& p, bool flus
 const PrecisionProfile& llvmpipe() { return *findProfile("llvmpipe"); }
 const PrecisionProfile& softpipe() { return *findProfile("softpipe"); }
 
-// Expected values below were measured on Mesa 22.3.6 (PRECISION.md and the research note).
+// Expected values below were measured on Mesa 22.3.6 (docs/precision.md and the research note).
 TEST(BlendEmu, TenSmallAddsVanishPerPassButNotInATileCache) {
   const float s = 0.0019f;  // 0.0019 * 255 = 0.4845 -> 0 per pass
   auto ten = [&](const PrecisionProfile& p, bool flush) {

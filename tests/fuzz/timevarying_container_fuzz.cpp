@@ -1,11 +1,11 @@
 // libFuzzer target: the time-varying container reader (reference/timevarying/container.h,
-// FORMAT.md beside it) on arbitrary bytes, then the exact decoder on whatever it accepts.
+// reference/timevarying/FORMAT.md beside it) on arbitrary bytes, then the exact decoder on whatever it accepts.
 //
 // Contract under test:
 // - parseTimeVarying either returns or throws io::FormatError; nothing else escapes, and nothing
 //   reads or writes out of bounds (AddressSanitizer) or has undefined behaviour
 //   (UndefinedBehaviorSanitizer), whatever the header claims;
-// - what it accepts holds FORMAT.md's "invariants a decoder may rely on": every voxel of every
+// - what it accepts holds reference/timevarying/FORMAT.md's "invariants a decoder may rely on": every voxel of every
 //   time step decodes (ref::decodeStep) without an exception, through texels inside the
 //   textures; a std::out_of_range from the decoder is a contract violation and escapes;
 // - writing back what was read gives the same bytes (serializeTimeVarying), but for the CRC-32

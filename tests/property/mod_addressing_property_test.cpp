@@ -6,7 +6,7 @@
 //   |glslMod - exact| <= ulp(fl(y f)) / 2 + ulp(result) / 2, where exact is taken with the same
 //   integer f = floor(fl(x / y)); when the rounded quotient crossed an integer (x within a rounding
 //   of a multiple of y), f differs from floor(x / y) by one and the result is the exact mod +- y
-//   (the "mod(k y, y) is about 0 or about y" of the dEQP interval model, PRECISION.md).
+//   (the "mod(k y, y) is about 0 or about y" of the dEQP interval model, docs/precision.md).
 // Inputs are the time-varying decoder's addressing (x in texture units, y = fl(1 / n)) plus random
 // signs, magnitudes and the multiples k y and their neighbours.
 #include <bit>

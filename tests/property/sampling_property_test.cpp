@@ -1,5 +1,5 @@
 // Property: TextureSamplerEmu::sampleRed (texture_sampler_emu.h, "bit-exact ... for the profiles of
-// profile.h") equals, bit for bit, an independent model written from that header and PRECISION.md.
+// profile.h") equals, bit for bit, an independent model written from that header and docs/precision.md.
 // The model evaluates every float32 step in long double and rounds it to float explicitly (a product
 // of two floats is exact in long double; a sum, difference or quotient rounded to long double and
 // then to float is correctly rounded because 64 >= 2 * 24 + 2), integer steps with exact floor

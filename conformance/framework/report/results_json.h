@@ -1,4 +1,4 @@
-// results.json: the machine-readable report of a run (DESIGN.md, "Command line"): the driver
+// results.json: the machine-readable report of a run (docs/design.md, "Command line"): the driver
 // (renderer, version, environment pins, CPU flags), the profile, and per case its status, every
 // oracle's verdict and figures, the effects simulated and the seconds spent per path.
 #pragma once

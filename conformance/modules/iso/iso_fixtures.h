@@ -1,4 +1,4 @@
-// Embree ground truth as files (fixtures/, DESIGN.md): for every frame of a scene's orbit, the
+// Embree ground truth as files (fixtures/, docs/design.md): for every frame of a scene's orbit, the
 // mesh the refinement extracts for that camera (no occlusion culling, uncompressed field) ray cast
 // by Embree, and the exact isosurface of the volume's trilinear field.
 //

@@ -1,5 +1,5 @@
 // A sparse-grid scene: the data, the sparse grid, the GL state of the paper's hardware method,
-// the camera and the image, as plain data with a JSON form (docs/scenes.md).
+// the camera and the image, as plain data with a JSON form (conformance/modules/sparsegrid/SCENE.md).
 //
 // Parsing is strict: unknown keys, wrong types and out-of-range values throw SceneError naming
 // the field and what was expected. Safe on untrusted input.

@@ -85,7 +85,7 @@ TEST(DriverFingerprint, AnUnknownCombinationMatchesNoProfileAndSaysWhy) {
   EXPECT_NE(verdict.find("framebuffer.between_passes: measured float_tile_cache, profile requantized"), std::string::npos) << verdict;
 }
 
-// The unorm8 sweep of a fixed-point sampler without SSSE3 (PRECISION.md: the driver then
+// The unorm8 sweep of a fixed-point sampler without SSSE3 (docs/precision.md: the driver then
 // truncates), with coordinates floored to 8 bits: a hand model, so the floor candidates are
 // exercised by bits no emulated profile produces.
 TEST(DriverFingerprint, RecognisesFlooredCoordinatesAndTruncatingLerps) {
