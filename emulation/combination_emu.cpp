@@ -10,10 +10,10 @@
 namespace voxref::emu {
 
 float combinationTexCoord(float p, int level, int extent, int origin) {
-  const float node = p * std::ldexp(1.0f, level);                  // exact: a power-of-two scale
-  const float centred = node + 0.5f;                                // exact on the plane-frame lattice
-  const float local = centred - static_cast<float>(origin);        // exact: an integer below 2^13
-  return local / static_cast<float>(extent);                        // the one rounding of the address
+  const float node = p * std::ldexp(1.0f, level);            // exact: a power-of-two scale
+  const float centred = node + 0.5f;                         // exact on the plane-frame lattice
+  const float local = centred - static_cast<float>(origin);  // exact: an integer below 2^13
+  return local / static_cast<float>(extent);                 // the one rounding of the address
 }
 
 std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures, const ref::SamplerState& sampler,
@@ -23,9 +23,10 @@ std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures,
   auto add = [&](Effect e) {
     if (std::find(effects.begin(), effects.end(), e) == effects.end()) effects.push_back(e);
   };
-  const bool divisionRounds = std::any_of(textures.textures.begin(), textures.textures.end(), [](const ref::GridTexture& t) {
-    return std::any_of(t.dims.begin(), t.dims.end(), [](int d) { return (d & (d - 1)) != 0; });
-  });
+  const bool divisionRounds =
+      std::any_of(textures.textures.begin(), textures.textures.end(), [](const ref::GridTexture& t) {
+        return std::any_of(t.dims.begin(), t.dims.end(), [](int d) { return (d & (d - 1)) != 0; });
+      });
   if (divisionRounds) add(Effect::AddressDivision);
   if (ref::brickedGridCount(textures) > 0) add(Effect::TextureBricks);
   for (const ref::GridTexture& t : textures.textures)
@@ -35,9 +36,9 @@ std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures,
 }
 
 EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, const ref::PlaneFrame& frame,
-                                   const ref::SamplerState& sampler, ref::FramebufferFormat format,
-                                   const PrecisionProfile& profile, const CombinationEmuOptions& options,
-                                   const std::function<void(int)>& progress) {
+                                  const ref::SamplerState& sampler, ref::FramebufferFormat format,
+                                  const PrecisionProfile& profile, const CombinationEmuOptions& options,
+                                  const std::function<void(int)>& progress) {
   const BlendEmu blend(format, profile, options.flushEachPass, frame.width, frame.height, options.forceAllEffects);
   std::vector<TextureSamplerEmu> samplers;
   samplers.reserve(textures.textures.size());
@@ -46,7 +47,8 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
 
   const std::size_t samples = static_cast<std::size_t>(frame.width) * frame.height * frame.planes;
   EmulatedPlanes out{{format, frame.width, frame.height, frame.planes, std::vector<std::uint32_t>(samples)},
-                     std::vector<std::uint8_t>(samples, 0), 0};
+                     std::vector<std::uint8_t>(samples, 0),
+                     0};
   // Uniforms exactly as the GL path sets them (exact float32 values, plane_frame.h).
   const glm::vec3 dx(frame.dx), dy(frame.dy);
 
@@ -69,10 +71,10 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
             if (!ref::servesCell(t, p.x * std::ldexp(1.0f, t.levels[0]), p.y * std::ldexp(1.0f, t.levels[1]),
                                  p.z * std::ldexp(1.0f, t.levels[2])))
               continue;
-            const float src = samplers[pass.texture].sampleRed(combinationTexCoord(p.x, t.levels[0], t.dims[0], t.origin[0]),
-                                                               combinationTexCoord(p.y, t.levels[1], t.dims[1], t.origin[1]),
-                                                               combinationTexCoord(p.z, t.levels[2], t.dims[2], t.origin[2]),
-                                                               &unmodelled);
+            const float src = samplers[pass.texture].sampleRed(
+                combinationTexCoord(p.x, t.levels[0], t.dims[0], t.origin[0]),
+                combinationTexCoord(p.y, t.levels[1], t.dims[1], t.origin[1]),
+                combinationTexCoord(p.z, t.levels[2], t.dims[2], t.origin[2]), &unmodelled);
             blend.blend(px, src, pass.equation);
           }
         const std::size_t idx = static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j;

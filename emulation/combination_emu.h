@@ -36,9 +36,9 @@ struct EmulatedPlanes {
 
 // Throws std::invalid_argument when the profile cannot model the target size (framebuffer_emu.h).
 EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, const ref::PlaneFrame& frame,
-                                   const ref::SamplerState& sampler, ref::FramebufferFormat format,
-                                   const PrecisionProfile& profile, const CombinationEmuOptions& options = {},
-                                   const std::function<void(int)>& progress = {});
+                                  const ref::SamplerState& sampler, ref::FramebufferFormat format,
+                                  const PrecisionProfile& profile, const CombinationEmuOptions& options = {},
+                                  const std::function<void(int)>& progress = {});
 
 // The effects emulateCombination simulates for this state: the union over the textures' sampling
 // stages, the address rounding when a texture extent is not a power of two, and the framebuffer.

@@ -12,17 +12,23 @@ namespace {
 
 int colourBits(ref::FramebufferFormat f) {
   switch (f) {
-    case ref::FramebufferFormat::RGBA16F: return 10;
-    case ref::FramebufferFormat::RGBA32F: return 23;
-    default: return ref::unormBits(f);
+    case ref::FramebufferFormat::RGBA16F:
+      return 10;
+    case ref::FramebufferFormat::RGBA32F:
+      return 23;
+    default:
+      return ref::unormBits(f);
   }
 }
 
 int colourBits(ref::TexelFormat f) {
   switch (f) {
-    case ref::TexelFormat::R16F: return 10;
-    case ref::TexelFormat::R32F: return 23;
-    default: return ref::unormBits(f);
+    case ref::TexelFormat::R16F:
+      return 10;
+    case ref::TexelFormat::R32F:
+      return 23;
+    default:
+      return ref::unormBits(f);
   }
 }
 
@@ -70,7 +76,8 @@ Interval CombinationEnvelope::at(int i, int j, int k, const EnvelopePrecision& p
   Interval dst{0.0, 0.0};
   for (const ref::CombinationPass& pass : textures_->passes) {
     const ref::GridTexture& t = textures_->textures[pass.texture];
-    if (!ref::servesCell(t, std::ldexp(p.x, t.levels[0]), std::ldexp(p.y, t.levels[1]), std::ldexp(p.z, t.levels[2]))) continue;
+    if (!ref::servesCell(t, std::ldexp(p.x, t.levels[0]), std::ldexp(p.y, t.levels[1]), std::ldexp(p.z, t.levels[2])))
+      continue;
     const glm::dvec3 u{ref::textureCoordinate(p.x, t.levels[0], t.dims[0], t.origin[0]),
                        ref::textureCoordinate(p.y, t.levels[1], t.dims[1], t.origin[1]),
                        ref::textureCoordinate(p.z, t.levels[2], t.dims[2], t.origin[2])};

@@ -29,7 +29,8 @@ std::uint16_t floatToHalfTowardZero(float x) {
   const std::uint32_t f = std::bit_cast<std::uint32_t>(x);
   const std::uint16_t sign = static_cast<std::uint16_t>((f >> 16) & 0x8000u);
   const std::uint32_t absBits = f & 0x7fffffffu;
-  if (absBits >= 0x7f800000u) return absBits == 0x7f800000u ? sign | 0x7c00u : sign | 0x7e00u | ((absBits >> 13) & 0x3ffu);
+  if (absBits >= 0x7f800000u)
+    return absBits == 0x7f800000u ? sign | 0x7c00u : sign | 0x7e00u | ((absBits >> 13) & 0x3ffu);
   const float a = std::bit_cast<float>(absBits);
   if (a >= 65504.0f) return sign | 0x7bffu;  // round toward zero never reaches infinity
   if (a < std::ldexp(1.0f, -14)) {
@@ -71,8 +72,6 @@ float glslMod(float x, float y) {
   return x - m;
 }
 
-float flushDenormal(float x) {
-  return std::fabs(x) < std::numeric_limits<float>::min() ? std::copysign(0.0f, x) : x;
-}
+float flushDenormal(float x) { return std::fabs(x) < std::numeric_limits<float>::min() ? std::copysign(0.0f, x) : x; }
 
 }  // namespace voxref::emu

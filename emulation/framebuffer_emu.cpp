@@ -22,20 +22,28 @@ BlendEmu::BlendEmu(ref::FramebufferFormat format, const PrecisionProfile& profil
       clampHi_(std::numeric_limits<float>::infinity()) {
   if (model_ == FramebufferModel::FloatTileCache &&
       (width > profile.maxModelledTargetWidth || height > profile.maxModelledTargetHeight))
-    throw std::invalid_argument("profile " + std::string(profile.name) + " models targets up to " +
-                                std::to_string(profile.maxModelledTargetWidth) + "x" +
-                                std::to_string(profile.maxModelledTargetHeight) + " (tile-cache eviction beyond), got " +
-                                std::to_string(width) + "x" + std::to_string(height));
+    throw std::invalid_argument(
+        "profile " + std::string(profile.name) + " models targets up to " +
+        std::to_string(profile.maxModelledTargetWidth) + "x" + std::to_string(profile.maxModelledTargetHeight) +
+        " (tile-cache eviction beyond), got " + std::to_string(width) + "x" + std::to_string(height));
 }
 
 std::vector<Effect> BlendEmu::effects() const {
   std::vector<Effect> e;
   if (model_ == FramebufferModel::QuantizePerPass) {
     switch (format_) {
-      case ref::FramebufferFormat::RGBA8: e = {Effect::OutputUnorm8, Effect::BlendSaturatingPerPass}; break;
-      case ref::FramebufferFormat::RGBA12: e = {Effect::OutputUnorm12, Effect::BlendSaturatingPerPass}; break;
-      case ref::FramebufferFormat::RGBA16: e = {Effect::OutputUnorm16HalfEven, Effect::BlendSaturatingPerPass}; break;
-      case ref::FramebufferFormat::RGBA16F: e = {Effect::BlendFloat32, Effect::StoreHalfTowardZeroPerPass}; break;
+      case ref::FramebufferFormat::RGBA8:
+        e = {Effect::OutputUnorm8, Effect::BlendSaturatingPerPass};
+        break;
+      case ref::FramebufferFormat::RGBA12:
+        e = {Effect::OutputUnorm12, Effect::BlendSaturatingPerPass};
+        break;
+      case ref::FramebufferFormat::RGBA16:
+        e = {Effect::OutputUnorm16HalfEven, Effect::BlendSaturatingPerPass};
+        break;
+      case ref::FramebufferFormat::RGBA16F:
+        e = {Effect::BlendFloat32, Effect::StoreHalfTowardZeroPerPass};
+        break;
       case ref::FramebufferFormat::RGBA32F:
         e = {Effect::BlendFloat32};
         if (profile_->flushDenormals) e.push_back(Effect::FlushDenormals);
@@ -45,12 +53,18 @@ std::vector<Effect> BlendEmu::effects() const {
   }
   e = {Effect::FloatTileCache, Effect::BlendFloat32};
   switch (format_) {
-    case ref::FramebufferFormat::RGBA8: e.push_back(Effect::OutputUnorm8); break;
-    case ref::FramebufferFormat::RGBA16:
-      e.push_back(profile_->unorm16Store == UnormRounding::HalfUp ? Effect::OutputUnorm16HalfUp : Effect::OutputUnorm16HalfEven);
+    case ref::FramebufferFormat::RGBA8:
+      e.push_back(Effect::OutputUnorm8);
       break;
-    case ref::FramebufferFormat::RGBA16F: e.push_back(Effect::StoreHalfTowardZeroOnFlush); break;
-    default: break;
+    case ref::FramebufferFormat::RGBA16:
+      e.push_back(profile_->unorm16Store == UnormRounding::HalfUp ? Effect::OutputUnorm16HalfUp
+                                                                  : Effect::OutputUnorm16HalfEven);
+      break;
+    case ref::FramebufferFormat::RGBA16F:
+      e.push_back(Effect::StoreHalfTowardZeroOnFlush);
+      break;
+    default:
+      break;
   }
   if (flushEachPass_ && format_ != ref::FramebufferFormat::RGBA32F) e.push_back(Effect::FlushEachPass);
   return e;
@@ -59,11 +73,15 @@ std::vector<Effect> BlendEmu::effects() const {
 std::uint32_t BlendEmu::store(float value) const {
   switch (format_) {
     case ref::FramebufferFormat::RGBA8:
-    case ref::FramebufferFormat::RGBA12: return floatToUnormHalfEven(value, bits_);
+    case ref::FramebufferFormat::RGBA12:
+      return floatToUnormHalfEven(value, bits_);
     case ref::FramebufferFormat::RGBA16:
-      return profile_->unorm16Store == UnormRounding::HalfUp ? floatToUnormHalfUp(value, 16) : floatToUnormHalfEven(value, 16);
-    case ref::FramebufferFormat::RGBA16F: return floatToHalfTowardZero(value);
-    case ref::FramebufferFormat::RGBA32F: return std::bit_cast<std::uint32_t>(value);
+      return profile_->unorm16Store == UnormRounding::HalfUp ? floatToUnormHalfUp(value, 16)
+                                                             : floatToUnormHalfEven(value, 16);
+    case ref::FramebufferFormat::RGBA16F:
+      return floatToHalfTowardZero(value);
+    case ref::FramebufferFormat::RGBA32F:
+      return std::bit_cast<std::uint32_t>(value);
   }
   return 0;
 }
@@ -133,7 +151,8 @@ void AlphaBlendEmu::blend(Pixel& px, const std::array<float, 4>& src) const {
     std::array<std::uint8_t, 4> s{};
     for (int c = 0; c < 4; ++c) s[c] = static_cast<std::uint8_t>(floatToUnormHalfEven(src[c], 8));
     const std::uint8_t a = s[3], oneMinusA = static_cast<std::uint8_t>(255 - a);
-    for (int c = 0; c < 4; ++c) px.code[c] = static_cast<std::uint8_t>(std::min(255, mulnorm8(s[c], a) + mulnorm8(px.code[c], oneMinusA)));
+    for (int c = 0; c < 4; ++c)
+      px.code[c] = static_cast<std::uint8_t>(std::min(255, mulnorm8(s[c], a) + mulnorm8(px.code[c], oneMinusA)));
     return;
   }
   auto clampUnit = [](float x) { return x > 0.0f ? (x > 1.0f ? 1.0f : x) : 0.0f; };  // u_math.h CLAMP: NaN -> 0
@@ -156,7 +175,8 @@ std::array<std::uint8_t, 4> AlphaBlendEmu::resolve(const Pixel& px) const {
 }
 
 std::vector<Effect> AlphaBlendEmu::effects() const {
-  if (profile_->framebuffer == FramebufferModel::QuantizePerPass) return {Effect::OutputUnorm8, Effect::BlendAlphaMulnorm};
+  if (profile_->framebuffer == FramebufferModel::QuantizePerPass)
+    return {Effect::OutputUnorm8, Effect::BlendAlphaMulnorm};
   if (flush_) return {Effect::FloatTileCache, Effect::BlendAlphaFloat, Effect::OutputUnorm8, Effect::FlushEachPass};
   return {Effect::FloatTileCache, Effect::BlendAlphaFloat, Effect::OutputUnorm8};
 }

@@ -48,9 +48,9 @@ class BlendEmu {
   std::vector<Effect> effects() const;
 
  private:
-  std::uint32_t store(float value) const;   // tile value -> stored code (FloatTileCache)
-  float reload(std::uint32_t code) const;   // stored code -> tile value
-  float formatClamp(float x) const;         // forced clamp of a float format: an identity
+  std::uint32_t store(float value) const;  // tile value -> stored code (FloatTileCache)
+  float reload(std::uint32_t code) const;  // stored code -> tile value
+  float formatClamp(float x) const;        // forced clamp of a float format: an identity
 
   ref::FramebufferFormat format_;
   const PrecisionProfile* profile_;
@@ -77,7 +77,8 @@ class AlphaBlendEmu {
     std::array<float, 4> value{};        // softpipe tile
   };
   // flushEachPass: glFinish after every slice; a float tile is stored and reloaded (unorm8) each time.
-  explicit AlphaBlendEmu(const PrecisionProfile& profile, bool flushEachPass = false) : profile_(&profile), flush_(flushEachPass) {}
+  explicit AlphaBlendEmu(const PrecisionProfile& profile, bool flushEachPass = false)
+      : profile_(&profile), flush_(flushEachPass) {}
   Pixel cleared() const { return {}; }  // glClearColor(0, 0, 0, 0)
   void blend(Pixel& pixel, const std::array<float, 4>& src) const;
   std::array<std::uint8_t, 4> resolve(const Pixel& pixel) const;

@@ -48,7 +48,7 @@ double ulpF32(double x) {
   // tcu::FloatFormat::ulp (framework/common/tcuFloatFormat.cpp) for binary32: minExp -126, 23
   // fraction bits.
   if (x == 0.0) return std::ldexp(1.0, -149);
-  int e = std::ilogb(std::fabs(x));  // |x| in [2^e, 2^(e+1))
+  int e = std::ilogb(std::fabs(x));             // |x| in [2^e, 2^(e+1))
   if (std::fabs(x) == std::ldexp(1.0, e)) --e;  // Harrison's ULP at a binade boundary
   return std::ldexp(1.0, std::max(e, -126) - 23);
 }
@@ -83,7 +83,9 @@ Interval divF32(const Interval& a, const Interval& b, double ulps) {
   const double qlo = *std::min_element(q, q + 4), qhi = *std::max_element(q, q + 4);
   // The ULP is taken at the largest magnitude (ULPs grow with it): exact for a point, sound for a range.
   const double maxAbs = std::max(std::fabs(qlo), std::fabs(qhi));
-  const double u = qlo == qhi ? ulpF32(qlo) : maxAbs == 0.0 ? ulpF32(0.0) : std::ldexp(1.0, std::max(std::ilogb(maxAbs), -126) - 23);
+  const double u = qlo == qhi      ? ulpF32(qlo)
+                   : maxAbs == 0.0 ? ulpF32(0.0)
+                                   : std::ldexp(1.0, std::max(std::ilogb(maxAbs), -126) - 23);
   // Allowed: the float32 values within ulps * u of the exact quotient. The double quotient and the
   // subtraction are each off by at most half a double ULP: two double steps outward cover both.
   const double lo = std::nextafter(std::nextafter(qlo - ulps * u, -kInf), -kInf);
@@ -99,7 +101,8 @@ Interval floorF32(const Interval& a) {
 std::vector<Interval> modF32(const Interval& x, const Interval& y, double divisionUlps) {
   const Interval k = floorF32(divF32(x, y, divisionUlps));
   if (!isBounded(k) || !isBounded(x)) return {unboundedF32()};
-  if (k.hi - k.lo > 64) throw std::invalid_argument("modF32: the quotient spans more than 64 integers; use a narrower x");
+  if (k.hi - k.lo > 64)
+    throw std::invalid_argument("modF32: the quotient spans more than 64 integers; use a narrower x");
   std::vector<Interval> out;
   for (double i = k.lo; i <= k.hi; ++i) out.push_back(subF32(x, mulF32(y, {i, i})));
   return out;
@@ -119,7 +122,8 @@ Interval unormCodes(const Interval& value, int bits) {
   const double lo = std::clamp(value.lo, 0.0, 1.0), hi = std::clamp(value.hi, 0.0, 1.0);
   // A float32 times 2^b - 1 (b <= 24) is exact in double, so floor and ceil are exact.
   const bool exactLo = isFloat32(lo), exactHi = isFloat32(hi);
-  const double sLo = exactLo ? lo * m : std::nextafter(lo * m, -kInf), sHi = exactHi ? hi * m : std::nextafter(hi * m, kInf);
+  const double sLo = exactLo ? lo * m : std::nextafter(lo * m, -kInf),
+               sHi = exactHi ? hi * m : std::nextafter(hi * m, kInf);
   return {std::max(0.0, std::floor(sLo)), std::min(m, std::ceil(sHi))};
 }
 

@@ -16,11 +16,13 @@ ref::ProbeFrame sweepFrame(const ref::ProbeSweep& sweep, const PrecisionProfile&
   for (const auto& texel : sweep.texelCodes)
     for (int c = 0; c < 4; ++c) channelCodes[c].push_back(texel[c]);
   std::vector<TextureSamplerEmu> channels;
-  for (int c = 0; c < 4; ++c) channels.emplace_back(ref::Dims3{sweep.texels, 1, 1}, format, channelCodes[c], sampler, profile);
+  for (int c = 0; c < 4; ++c)
+    channels.emplace_back(ref::Dims3{sweep.texels, 1, 1}, format, channelCodes[c], sampler, profile);
   const int samples = sweep.width * sweep.height;
   frame.codes.resize(static_cast<std::size_t>(samples));
   for (int k = 0; k < samples; ++k)
-    for (int c = 0; c < 4; ++c) frame.codes[k][c] = std::bit_cast<std::uint32_t>(channels[c].sampleRed(sweep.u(k), 0.5f, 0.5f));
+    for (int c = 0; c < 4; ++c)
+      frame.codes[k][c] = std::bit_cast<std::uint32_t>(channels[c].sampleRed(sweep.u(k), 0.5f, 0.5f));
   return frame;
 }
 

@@ -35,15 +35,15 @@ constexpr PrecisionProfile softpipe() {
   p.unorm16Store = UnormRounding::HalfUp;  // util_iround in the generated pack function
   p.textureTileCache.aliasing = true;
   p.texelFetchOutOfRangeClamps = true;
-  p.maxModelledTargetWidth = 320;          // 5 tile columns of 64: no two tiles share a cache slot
+  p.maxModelledTargetWidth = 320;  // 5 tile columns of 64: no two tiles share a cache slot
   p.maxModelledTargetHeight = 640;
   p.environment = "GALLIUM_DRIVER=softpipe";
   return p;
 }
 
 constexpr std::array<PrecisionProfile, 5> kProfiles{
-    llvmpipe("llvmpipe", "Mesa 22.3 llvmpipe on a CPU with FMA: 8-bit AoS sampling for unorm8, fused float lerps",
-             true, LerpArithmetic::Fused, "GALLIUM_DRIVER=llvmpipe, CPU with FMA"),
+    llvmpipe("llvmpipe", "Mesa 22.3 llvmpipe on a CPU with FMA: 8-bit AoS sampling for unorm8, fused float lerps", true,
+             LerpArithmetic::Fused, "GALLIUM_DRIVER=llvmpipe, CPU with FMA"),
     llvmpipe("llvmpipe-nofma", "Mesa 22.3 llvmpipe without FMA: 8-bit AoS sampling for unorm8, unfused float lerps",
              true, LerpArithmetic::Unfused, "CPU without FMA, or GALLIUM_OVERRIDE_CPU_CAPS=sse4.1"),
     llvmpipe("llvmpipe-noaos", "Mesa 22.3 llvmpipe with GALLIVM_PERF=no_aos_sampling: float path for every format",

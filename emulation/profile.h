@@ -57,7 +57,7 @@ struct PrecisionProfile {
   // CLAMP_TO_EDGE: 8 subtexel bits, 8-bit lerps rounded as pmulhrsw does.
   bool aos8BitSampling = false;
   LerpArithmetic floatLerp = LerpArithmetic::Unfused;
-  bool flushDenormals = false;  // FTZ/DAZ in texture filtering and float32 blending
+  bool flushDenormals = false;        // FTZ/DAZ in texture filtering and float32 blending
   TextureTileCache textureTileCache;  // softpipe only
   // The compiler folds a product with the constant 0 to 0, so GLSL's mod(x, 0.0) written with a
   // literal zero is x (Mesa's nir_opt_algebraic `~fmul(a, 0.0)`); with a zero it cannot see (a
@@ -84,11 +84,11 @@ const PrecisionProfile* findProfile(std::string_view name);
 // as the same profile with that behaviour removed plus a flag for per-pass flushes. A case run
 // under a profile with departures reports, per departure, how many samples they change.
 struct Departure {
-  std::string_view id;           // "softpipe.framebuffer.no_per_pass_requantization"
+  std::string_view id;  // "softpipe.framebuffer.no_per_pass_requantization"
   std::string_view description;
-  PrecisionProfile semantics;    // the profile without this behaviour
-  bool flushEachPass = false;    // the semantics are obtained with a flush after every pass
-  Effect effect;                 // the simulated effect that is this behaviour
+  PrecisionProfile semantics;  // the profile without this behaviour
+  bool flushEachPass = false;  // the semantics are obtained with a flush after every pass
+  Effect effect;               // the simulated effect that is this behaviour
 };
 std::vector<Departure> departuresFromGlSemantics(const PrecisionProfile& profile);
 // The departures a scene meets: those whose effect is among the effects its emulation simulates

@@ -18,8 +18,8 @@ double floatingPointError(double value, int accurateBits) {
 
 double fixedPointError(int accurateBits) { return floatingPointError(1.0, accurateBits); }
 
-TextureEnvelope::TextureEnvelope(const ref::Dims3& dims, ref::TexelFormat format, const std::vector<std::uint32_t>& codes,
-                                 const ref::SamplerState& sampler)
+TextureEnvelope::TextureEnvelope(const ref::Dims3& dims, ref::TexelFormat format,
+                                 const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler)
     : dims_(dims), sampler_(sampler), values_(codes.size()) {
   for (std::size_t i = 0; i < codes.size(); ++i) values_[i] = ref::decodeTexel(format, codes[i]);
   border_ = ref::unormBits(format) ? std::clamp(sampler.borderRed, 0.0, 1.0) : sampler.borderRed;
@@ -30,14 +30,19 @@ double TextureEnvelope::texel(int x, int y, int z) const {
   for (int a = 0; a < 3; ++a) {
     const int n = dims_[a];
     switch (sampler_.wrap) {
-      case ref::Wrap::ClampToEdge: c[a] = std::clamp(c[a], 0, n - 1); break;
-      case ref::Wrap::Repeat: c[a] = ((c[a] % n) + n) % n; break;
+      case ref::Wrap::ClampToEdge:
+        c[a] = std::clamp(c[a], 0, n - 1);
+        break;
+      case ref::Wrap::Repeat:
+        c[a] = ((c[a] % n) + n) % n;
+        break;
       case ref::Wrap::ClampToBorder:
         if (c[a] < 0 || c[a] >= n) return border_;
         break;
     }
   }
-  return values_[static_cast<std::size_t>(c[0]) + static_cast<std::size_t>(dims_[0]) * (c[1] + static_cast<std::size_t>(dims_[1]) * c[2])];
+  return values_[static_cast<std::size_t>(c[0]) +
+                 static_cast<std::size_t>(dims_[0]) * (c[1] + static_cast<std::size_t>(dims_[1]) * c[2])];
 }
 
 int TextureEnvelope::candidates(double u, int n, const EnvelopePrecision& p, Candidate out[4]) const {
@@ -60,7 +65,8 @@ int TextureEnvelope::candidates(double u, int n, const EnvelopePrecision& p, Can
 
 Interval TextureEnvelope::lookup(const glm::dvec3& u, const EnvelopePrecision& p) const {
   Candidate cx[4], cy[4], cz[4];
-  const int nx = candidates(u.x, dims_[0], p, cx), ny = candidates(u.y, dims_[1], p, cy), nz = candidates(u.z, dims_[2], p, cz);
+  const int nx = candidates(u.x, dims_[0], p, cx), ny = candidates(u.y, dims_[1], p, cy),
+            nz = candidates(u.z, dims_[2], p, cz);
   Interval out{std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
   auto include = [&](double v) {
     out.lo = std::min(out.lo, v);

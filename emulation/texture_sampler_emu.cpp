@@ -1,11 +1,11 @@
 #include "emulation/texture_sampler_emu.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <climits>
-#include <cstdint>
-#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <stdexcept>
 
@@ -19,7 +19,8 @@ bool isPowerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 // softpipe's repeat(): (c + 1024 size) % size in unsigned arithmetic (sp_tex_sample.c:118-122).
 int softpipeRepeat(int c, int size) {
-  return static_cast<int>((static_cast<unsigned>(c) + static_cast<unsigned>(size) * 1024u) % static_cast<unsigned>(size));
+  return static_cast<int>((static_cast<unsigned>(c) + static_cast<unsigned>(size) * 1024u) %
+                          static_cast<unsigned>(size));
 }
 
 float fractOf(float s) { return s - std::floor(s); }
@@ -48,19 +49,31 @@ std::vector<Effect> TextureSamplerEmu::effects() const {
   std::vector<Effect> e;
   switch (format_) {
     case ref::TexelFormat::R8:
-    case ref::TexelFormat::RGBA8: e.push_back(Effect::TexelUnorm8); break;
-    case ref::TexelFormat::R16: e.push_back(Effect::TexelUnorm16); break;
-    case ref::TexelFormat::R16F: e.push_back(Effect::TexelHalf); break;
-    case ref::TexelFormat::R32F: e.push_back(Effect::TexelFloat32); break;
+    case ref::TexelFormat::RGBA8:
+      e.push_back(Effect::TexelUnorm8);
+      break;
+    case ref::TexelFormat::R16:
+      e.push_back(Effect::TexelUnorm16);
+      break;
+    case ref::TexelFormat::R16F:
+      e.push_back(Effect::TexelHalf);
+      break;
+    case ref::TexelFormat::R32F:
+      e.push_back(Effect::TexelFloat32);
+      break;
   }
   if (ref::unormBits(format_)) e.push_back(Effect::UnormToFloatReciprocal);
   switch (path_) {
-    case SamplerPath::Aos8Linear: e.push_back(Effect::SamplerAos8Bit); break;
+    case SamplerPath::Aos8Linear:
+      e.push_back(Effect::SamplerAos8Bit);
+      break;
     case SamplerPath::FloatLinear:
       e.push_back(Effect::SamplerFloatWeights);
       e.push_back(profile_->floatLerp == LerpArithmetic::Fused ? Effect::LerpFused : Effect::LerpUnfused);
       break;
-    case SamplerPath::Nearest: e.push_back(Effect::SamplerNearest); break;
+    case SamplerPath::Nearest:
+      e.push_back(Effect::SamplerNearest);
+      break;
   }
   if (sampler_.wrap == ref::Wrap::ClampToBorder) e.push_back(Effect::BorderTexels);
   if (path_ == SamplerPath::FloatLinear && profile_->textureTileCache.aliasing) e.push_back(Effect::TileCacheAliasing);
@@ -71,13 +84,16 @@ std::vector<Effect> TextureSamplerEmu::effects() const {
 
 float TextureSamplerEmu::texel(int x, int y, int z) const {
   if (x < 0 || y < 0 || z < 0 || x >= dims_[0] || y >= dims_[1] || z >= dims_[2]) return border_;
-  const std::uint32_t code =
-      (*codes_)[static_cast<std::size_t>(x) + static_cast<std::size_t>(dims_[0]) * (y + static_cast<std::size_t>(dims_[1]) * z)];
+  const std::uint32_t code = (*codes_)[static_cast<std::size_t>(x) + static_cast<std::size_t>(dims_[0]) *
+                                                                         (y + static_cast<std::size_t>(dims_[1]) * z)];
   switch (format_) {
     case ref::TexelFormat::R8:
-    case ref::TexelFormat::RGBA8: return unormToFloat(code, 8);
-    case ref::TexelFormat::R16: return unormToFloat(code, 16);
-    case ref::TexelFormat::R16F: return halfToFloat(static_cast<std::uint16_t>(code));
+    case ref::TexelFormat::RGBA8:
+      return unormToFloat(code, 8);
+    case ref::TexelFormat::R16:
+      return unormToFloat(code, 16);
+    case ref::TexelFormat::R16F:
+      return halfToFloat(static_cast<std::uint16_t>(code));
     case ref::TexelFormat::R32F: {
       const float v = std::bit_cast<float>(code);
       return profile_->flushDenormals ? flushDenormal(v) : v;
@@ -87,7 +103,8 @@ float TextureSamplerEmu::texel(int x, int y, int z) const {
 }
 
 std::uint32_t TextureSamplerEmu::texelCode8(int x, int y, int z) const {
-  return (*codes_)[static_cast<std::size_t>(x) + static_cast<std::size_t>(dims_[0]) * (y + static_cast<std::size_t>(dims_[1]) * z)];
+  return (*codes_)[static_cast<std::size_t>(x) +
+                   static_cast<std::size_t>(dims_[0]) * (y + static_cast<std::size_t>(dims_[1]) * z)];
 }
 
 float TextureSamplerEmu::lerp(float w, float a, float b) const {
@@ -208,7 +225,8 @@ int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& pr
   if (profile.sampler == SamplerFamily::Softpipe) {
     const float u = s * nf;  // sp_tex_sample.c:133-195
     switch (wrap) {
-      case ref::Wrap::Repeat: return softpipeRepeat(softpipeIfloor(u), n);
+      case ref::Wrap::Repeat:
+        return softpipeRepeat(softpipeIfloor(u), n);
       case ref::Wrap::ClampToEdge:
         if (u < 0.5f) return 0;
         if (u > nf - 0.5f) return n - 1;
@@ -226,7 +244,8 @@ int nearestTexelIndex(float s, int n, ref::Wrap wrap, const PrecisionProfile& pr
     case ref::Wrap::Repeat:
       if ((n & (n - 1)) == 0) return toInt(std::floor(s * nf)) & (n - 1);
       return toInt(std::trunc(std::min(fractOf(s), 0x1.fffffep-1f) * nf));
-    case ref::Wrap::ClampToEdge: return std::clamp(toInt(std::trunc(s * nf)), 0, n - 1);
+    case ref::Wrap::ClampToEdge:
+      return std::clamp(toInt(std::trunc(s * nf)), 0, n - 1);
     case ref::Wrap::ClampToBorder: {
       const int i = toInt(std::floor(s * nf));
       if (i == INT32_MIN || i < 0) return -1;
@@ -245,7 +264,7 @@ float TextureSamplerEmu::weightStageIdentity(float value, float s, float t, floa
     w[a] = floatLinearAxis(c[a], n[a]).w;
     if (!(w[a] >= 0.0f && w[a] <= 1.0f)) w[a] = 0.0f;  // NaN or infinite coordinates
   }
-  const float row = lerp(w[0], value, value);              // x on the four edges: all equal
+  const float row = lerp(w[0], value, value);  // x on the four edges: all equal
   const float slice = lerp(w[1], row, lerp(w[0], value, value));
   const float slice1 = lerp(w[1], lerp(w[0], value, value), lerp(w[0], value, value));
   const float v = lerp(w[2], slice, slice1);
@@ -301,7 +320,8 @@ void TextureSamplerEmu::aliasTaps(const int x[2], const int y[2], const int z[2]
 float TextureSamplerEmu::sampleRed(float s, float t, float r, bool* unmodelled) const {
   switch (path_) {
     case SamplerPath::Nearest: {
-      const int x = nearestTexelIndex(s, dims_[0], sampler_.wrap, *profile_), y = nearestTexelIndex(t, dims_[1], sampler_.wrap, *profile_),
+      const int x = nearestTexelIndex(s, dims_[0], sampler_.wrap, *profile_),
+                y = nearestTexelIndex(t, dims_[1], sampler_.wrap, *profile_),
                 z = nearestTexelIndex(r, dims_[2], sampler_.wrap, *profile_);
       return force_ ? weightStageIdentity(texel(x, y, z), s, t, r) : texel(x, y, z);
     }
@@ -319,7 +339,8 @@ float TextureSamplerEmu::sampleRed(float s, float t, float r, bool* unmodelled) 
       return unormToFloat(static_cast<std::uint32_t>(result), 8);
     }
     case SamplerPath::FloatLinear: {
-      const FloatAxis ax = floatLinearAxis(s, dims_[0]), ay = floatLinearAxis(t, dims_[1]), az = floatLinearAxis(r, dims_[2]);
+      const FloatAxis ax = floatLinearAxis(s, dims_[0]), ay = floatLinearAxis(t, dims_[1]),
+                      az = floatLinearAxis(r, dims_[2]);
       if (profile_->textureTileCache.aliasing) {
         const int xs[2] = {ax.i0, ax.i1}, ys[2] = {ay.i0, ay.i1}, zs[2] = {az.i0, az.i1};
         float v[8];

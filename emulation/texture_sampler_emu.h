@@ -63,7 +63,7 @@ class TextureSamplerEmu {
   };
   FloatAxis floatLinearAxis(float s, int n) const;
   FixedAxis aosLinearAxis(float s, int n) const;
-  float texel(int x, int y, int z) const;           // value, or border when out of range
+  float texel(int x, int y, int z) const;               // value, or border when out of range
   std::uint32_t texelCode8(int x, int y, int z) const;  // AoS: the stored byte
   float lerp(float w, float a, float b) const;
   // The eight taps of a softpipe trilinear lookup after its tile-cache aliasing (profile.h).

@@ -13,7 +13,8 @@ namespace voxref::emu {
 namespace {
 
 std::size_t texelOffset(const ref::Dims3& d, const std::array<int, 3>& t) {
-  return static_cast<std::size_t>(t[0]) + static_cast<std::size_t>(d[0]) * (t[1] + static_cast<std::size_t>(d[1]) * t[2]);
+  return static_cast<std::size_t>(t[0]) +
+         static_cast<std::size_t>(d[0]) * (t[1] + static_cast<std::size_t>(d[1]) * t[2]);
 }
 
 bool inside(const ref::Dims3& d, const std::array<int, 3>& t) {
@@ -34,7 +35,8 @@ ref::Rgba8 outputRgba8(const std::array<float, 4>& v) {
 TimeVaryingDecoderEmu::TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
                                              const PrecisionProfile& profile, bool forceAllEffects)
     : tex_(&textures), variant_(variant), profile_(&profile), force_(forceAllEffects) {
-  if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding); !why.empty())
+  if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding);
+      !why.empty())
     throw std::invalid_argument(why);
   if (force_) {  // LINEAR weights with CLAMP_TO_EDGE, the decoders' wrap
     const ref::SamplerState linear{ref::Filter::Linear, ref::Wrap::ClampToEdge, 0.0};
@@ -43,8 +45,8 @@ TimeVaryingDecoderEmu::TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& tex
   }
 }
 
-std::array<float, 4> TimeVaryingDecoderEmu::forcedWeights(const std::optional<TextureSamplerEmu>& w, std::array<float, 4> v,
-                                                          const float c[3]) const {
+std::array<float, 4> TimeVaryingDecoderEmu::forcedWeights(const std::optional<TextureSamplerEmu>& w,
+                                                          std::array<float, 4> v, const float c[3]) const {
   if (w)
     for (float& x : v) x = w->weightStageIdentity(x, c[0], c[1], c[2]);
   return v;
@@ -53,9 +55,14 @@ std::array<float, 4> TimeVaryingDecoderEmu::forcedWeights(const std::optional<Te
 std::vector<Effect> TimeVaryingDecoderEmu::effects() const {
   std::vector<Effect> e;
   switch (tex_->index.encoding) {
-    case ref::IndexEncoding::NormalizedRgba16: e.push_back(Effect::TexelUnorm16); break;
-    case ref::IndexEncoding::NormalizedFloat: e.push_back(Effect::TexelFloat32); break;
-    default: e.push_back(Effect::TexelUnorm8);
+    case ref::IndexEncoding::NormalizedRgba16:
+      e.push_back(Effect::TexelUnorm16);
+      break;
+    case ref::IndexEncoding::NormalizedFloat:
+      e.push_back(Effect::TexelFloat32);
+      break;
+    default:
+      e.push_back(Effect::TexelUnorm8);
   }
   e.push_back(Effect::UnormToFloatReciprocal);
   auto add = [&e](std::initializer_list<Effect> list) {
@@ -63,15 +70,20 @@ std::vector<Effect> TimeVaryingDecoderEmu::effects() const {
   };
   switch (variant_) {
     case ref::DecoderVariant::Literal:
-      add({Effect::DecodeUnormAddress, profile_->foldsMultiplyByConstantZero ? Effect::DecodeModByZeroFolded : Effect::DecodeGlslMod,
+      add({Effect::DecodeUnormAddress,
+           profile_->foldsMultiplyByConstantZero ? Effect::DecodeModByZeroFolded : Effect::DecodeGlslMod,
            Effect::SamplerNearest});
       break;
     case ref::DecoderVariant::Paper:
       if (tex_->index.encoding != ref::IndexEncoding::NormalizedFloat) add({Effect::DecodeUnormAddress});
       add({Effect::DecodeGlslMod, Effect::SamplerNearest});
       break;
-    case ref::DecoderVariant::TexelCentre: add({Effect::DecodeIntegerAddress, Effect::SamplerNearest}); break;
-    case ref::DecoderVariant::TexelFetch: add({Effect::DecodeIntegerAddress}); break;
+    case ref::DecoderVariant::TexelCentre:
+      add({Effect::DecodeIntegerAddress, Effect::SamplerNearest});
+      break;
+    case ref::DecoderVariant::TexelFetch:
+      add({Effect::DecodeIntegerAddress});
+      break;
   }
   return e;
 }
@@ -80,13 +92,16 @@ std::array<float, 4> TimeVaryingDecoderEmu::indexTexel(const std::array<int, 3>&
   std::array<float, 4> v{};
   const std::uint32_t* c = &tex_->index.texels[4 * texelOffset(tex_->index.dims, t)];
   for (int i = 0; i < 4; ++i) switch (tex_->index.encoding) {
-      case ref::IndexEncoding::NormalizedRgba16: v[i] = unormToFloat(c[i], 16); break;
+      case ref::IndexEncoding::NormalizedRgba16:
+        v[i] = unormToFloat(c[i], 16);
+        break;
       case ref::IndexEncoding::NormalizedFloat: {
         const float f = std::bit_cast<float>(c[i]);
         v[i] = profile_->flushDenormals ? flushDenormal(f) : f;
         break;
       }
-      default: v[i] = unormToFloat(c[i], 8);
+      default:
+        v[i] = unormToFloat(c[i], 8);
     }
   return v;
 }
@@ -177,7 +192,8 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
         // Forced: the weight stage at the texel's centre, (t + 0.5) / size.
         float centre[3];
         for (int a = 0; a < 3; ++a) centre[a] = (static_cast<float>(t[a]) + 0.5f) / static_cast<float>(d[a]);
-        return index ? forcedWeights(indexWeights_, indexTexel(t), centre) : forcedWeights(refinementWeights_, refinementTexel(t), centre);
+        return index ? forcedWeights(indexWeights_, indexTexel(t), centre)
+                     : forcedWeights(refinementWeights_, refinementTexel(t), centre);
       };
       std::array<int, 3> cell{};
       for (int a = 0; a < 3; ++a) {
@@ -202,7 +218,8 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
 }
 
 EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool forceAllEffects) {
+                                   const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads,
+                                   bool forceAllEffects) {
   const TimeVaryingDecoderEmu decoder(textures, variant, profile, forceAllEffects);
   const std::size_t perPlane = static_cast<std::size_t>(frame.width) * frame.height;
   EmulatedDecode out{{frame.width, frame.height, frame.planes, std::vector<ref::Rgba8>(perPlane * frame.planes)},
@@ -214,20 +231,23 @@ EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref
       for (int i = 0; i < frame.width; ++i) {
         const float fx = static_cast<float>(i) + 0.5f, fy = static_cast<float>(j) + 0.5f;
         const glm::vec3 p((o.x + fx * dx.x) + fy * dy.x, (o.y + fx * dx.y) + fy * dy.y, (o.z + fx * dx.z) + fy * dy.z);
-        const std::size_t idx = perPlane * static_cast<std::size_t>(k) + static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j;
+        const std::size_t idx = perPlane * static_cast<std::size_t>(k) + static_cast<std::size_t>(i) +
+                                static_cast<std::size_t>(frame.width) * j;
         out.samples[idx] = decoder.decode(step, p);
-        out.colours.colours[idx] = out.samples[idx].discarded ? ref::Rgba8{0, 0, 0, 0} : outputRgba8(out.samples[idx].value);
+        out.colours.colours[idx] =
+            out.samples[idx].discarded ? ref::Rgba8{0, 0, 0, 0} : outputRgba8(out.samples[idx].value);
       }
   });
   return out;
 }
 
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads, bool flushEachPass,
-                                bool forceAllEffects) {
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads,
+                                bool flushEachPass, bool forceAllEffects) {
   const TimeVaryingDecoderEmu decoder(textures, variant, profile, forceAllEffects);
   const AlphaBlendEmu blend(profile, flushEachPass);
-  ref::RgbaStack out{frame.width, frame.height, 1, std::vector<ref::Rgba8>(static_cast<std::size_t>(frame.width) * frame.height)};
+  ref::RgbaStack out{frame.width, frame.height, 1,
+                     std::vector<ref::Rgba8>(static_cast<std::size_t>(frame.width) * frame.height)};
   const glm::vec3 dx(frame.dx), dy(frame.dy);
   // Rows are independent: each pixel blends its own slices, back (k = planes - 1) to front.
   ref::parallelFor(frame.height, threads, [&](int j) {

@@ -39,8 +39,8 @@ class TimeVaryingDecoderEmu {
   // measured): every NEAREST fetch (and texelFetch) goes through the LINEAR path's float weight
   // stage, the seven trilinear lerps of each channel with every tap on the fetched texel
   // (TextureSamplerEmu::weightStageIdentity). Same bits; only the time differs.
-  TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, const PrecisionProfile& profile,
-                        bool forceAllEffects = false);
+  TimeVaryingDecoderEmu(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                        const PrecisionProfile& profile, bool forceAllEffects = false);
   DecodedSample decode(int step, glm::vec3 p) const;  // p exactly as the shader's samplePoint()
   std::vector<Effect> effects() const;
 
@@ -53,9 +53,10 @@ class TimeVaryingDecoderEmu {
   ref::DecoderVariant variant_;
   const PrecisionProfile* profile_;
   bool force_ = false;
-  std::vector<std::uint32_t> noCodes_;                 // the weight stage reads no texel
+  std::vector<std::uint32_t> noCodes_;                                 // the weight stage reads no texel
   std::optional<TextureSamplerEmu> indexWeights_, refinementWeights_;  // forced weight stages
-  std::array<float, 4> forcedWeights(const std::optional<TextureSamplerEmu>& w, std::array<float, 4> v, const float c[3]) const;
+  std::array<float, 4> forcedWeights(const std::optional<TextureSamplerEmu>& w, std::array<float, 4> v,
+                                     const float c[3]) const;
 };
 
 struct EmulatedDecode {
@@ -70,7 +71,7 @@ EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref
 
 // The planes composited back to front, as gpu::compositeGl: one image.
 ref::RgbaStack emulateComposite(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0, bool flushEachPass = false,
-                                bool forceAllEffects = false);
+                                const ref::PlaneFrame& frame, const PrecisionProfile& profile, int threads = 0,
+                                bool flushEachPass = false, bool forceAllEffects = false);
 
 }  // namespace voxref::emu

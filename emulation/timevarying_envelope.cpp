@@ -30,13 +30,16 @@ std::size_t offset(const ref::Dims3& d, int x, int y, int z) {
 
 // One quantization to the 8-bit grid of a blend operation, in code units (GL 4.6 section 17.3.6:
 // "precision no lower than" the destination's; either neighbouring level, exact on a level).
-Interval level8(double lo, double hi) { return {std::clamp(std::floor(lo), 0.0, 255.0), std::clamp(std::ceil(hi), 0.0, 255.0)}; }
+Interval level8(double lo, double hi) {
+  return {std::clamp(std::floor(lo), 0.0, 255.0), std::clamp(std::ceil(hi), 0.0, 255.0)};
+}
 
 // One SRC_ALPHA / ONE_MINUS_SRC_ALPHA blend of source codes s (alpha a) onto destination codes d.
 Interval blendChannel(const Interval& s, const Interval& a, const Interval& d) {
   const Interval product = isPoint(a, 0.0) ? point(0.0) : level8(s.lo * a.lo / 255.0, s.hi * a.hi / 255.0);
   const Interval oneMinusA{255.0 - a.hi, 255.0 - a.lo};  // 1 - a of a value on the grid: exact
-  const Interval kept = isPoint(oneMinusA, 255.0) ? d : level8(d.lo * oneMinusA.lo / 255.0, d.hi * oneMinusA.hi / 255.0);
+  const Interval kept =
+      isPoint(oneMinusA, 255.0) ? d : level8(d.lo * oneMinusA.lo / 255.0, d.hi * oneMinusA.hi / 255.0);
   return {std::min(product.lo + kept.lo, 255.0), std::min(product.hi + kept.hi, 255.0)};  // clamped, stored exactly
 }
 
@@ -73,7 +76,8 @@ RgbaIntervals AllowedColours::hull() const {
 
 TimeVaryingEnvelope::TimeVaryingEnvelope(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant)
     : tex_(&textures), variant_(variant) {
-  if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding); !why.empty())
+  if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding);
+      !why.empty())
     throw std::invalid_argument(why);
   std::array<int, 4> lo{255, 255, 255, 255}, hi{0, 0, 0, 0};
   for (std::size_t i = 0; i < textures.refinement.texels.size(); ++i) {
@@ -89,14 +93,17 @@ RgbaIntervals TimeVaryingEnvelope::indexValue(int x, int y, int z) const {
   const std::uint32_t* c = &tex_->index.texels[4 * offset(tex_->index.dims, x, y, z)];
   RgbaIntervals v{};
   for (int ch = 0; ch < 4; ++ch) switch (tex_->index.encoding) {
-      case ref::IndexEncoding::NormalizedRgba16: v[ch] = unormToFloatF32(c[ch], 16, kEnvelopePass.divisionUlps); break;
+      case ref::IndexEncoding::NormalizedRgba16:
+        v[ch] = unormToFloatF32(c[ch], 16, kEnvelopePass.divisionUlps);
+        break;
       case ref::IndexEncoding::NormalizedFloat: {
         // Float texels are returned as stored; a denormal may be flushed to zero (GLSL 4.60 4.7.1).
         const double f = std::bit_cast<float>(c[ch]);
         v[ch] = std::fabs(f) < 0x1p-126 ? Interval{std::min(f, 0.0), std::max(f, 0.0)} : point(f);
         break;
       }
-      default: v[ch] = unormToFloatF32(c[ch], 8, kEnvelopePass.divisionUlps);
+      default:
+        v[ch] = unormToFloatF32(c[ch], 8, kEnvelopePass.divisionUlps);
     }
   return v;
 }
@@ -113,10 +120,12 @@ TimeVaryingEnvelope::Range TimeVaryingEnvelope::nearest(const Interval& s, int n
   // i = floor(u), CLAMP_TO_EDGE clamps i to [0, n - 1].
   const double lo = (s.lo - floatingPointError(s.lo, p.coordBits)) * n - fixedPointError(p.uvwBits);
   const double hi = (s.hi + floatingPointError(s.hi, p.coordBits)) * n + fixedPointError(p.uvwBits);
-  return {std::clamp(static_cast<int>(std::floor(lo)), 0, n - 1), std::clamp(static_cast<int>(std::floor(hi)), 0, n - 1)};
+  return {std::clamp(static_cast<int>(std::floor(lo)), 0, n - 1),
+          std::clamp(static_cast<int>(std::floor(hi)), 0, n - 1)};
 }
 
-void TimeVaryingEnvelope::addRefinement(const std::array<std::vector<Range>, 3>& axes, std::vector<RgbaIntervals>& out) const {
+void TimeVaryingEnvelope::addRefinement(const std::array<std::vector<Range>, 3>& axes,
+                                        std::vector<RgbaIntervals>& out) const {
   std::array<std::vector<int>, 3> texels;
   for (int a = 0; a < 3; ++a) {
     for (const Range& r : axes[a])
@@ -124,7 +133,8 @@ void TimeVaryingEnvelope::addRefinement(const std::array<std::vector<Range>, 3>&
     std::sort(texels[a].begin(), texels[a].end());
     texels[a].erase(std::unique(texels[a].begin(), texels[a].end()), texels[a].end());
   }
-  if (texels[0].size() * texels[1].size() * texels[2].size() > 4096) {  // whole regions: their hull is the whole texture's, at worst
+  if (texels[0].size() * texels[1].size() * texels[2].size() >
+      4096) {  // whole regions: their hull is the whole texture's, at worst
     out.push_back(refinementHull_);
     return;
   }
@@ -133,19 +143,22 @@ void TimeVaryingEnvelope::addRefinement(const std::array<std::vector<Range>, 3>&
       for (int x : texels[0]) out.push_back(refinementValue(x, y, z));
 }
 
-void TimeVaryingEnvelope::paperOrLiteral(int step, const glm::dvec3& p, const EnvelopePrecision& prec, std::vector<RgbaIntervals>& out) const {
+void TimeVaryingEnvelope::paperOrLiteral(int step, const glm::dvec3& p, const EnvelopePrecision& prec,
+                                         std::vector<RgbaIntervals>& out) const {
   const ref::TimeVaryingLayout& L = tex_->layout;
   const auto slot = ref::indexSlot(L, step);
   const bool literal = variant_ == ref::DecoderVariant::Literal;
   const float S = static_cast<float>(L.indexSlots), n = static_cast<float>(L.cells);
   // Uniforms as gpu/timevarying_gl.cpp sets them (float32).
-  const Interval slotScale = point(1.0f / S), cellSize = point(1.0f / n), blockScale = point(n / static_cast<float>(L.blockSlots));
+  const Interval slotScale = point(1.0f / S), cellSize = point(1.0f / n),
+                 blockScale = point(n / static_cast<float>(L.blockSlots));
   std::array<Range, 3> index{};
   std::array<std::vector<Interval>, 3> offsets;  // mod(p, cellSize) * blockScale, one per branch
   for (int a = 0; a < 3; ++a) {
     const Interval origin = point(static_cast<float>(slot[a]) / S), pa = point(p[a]);
     // literal: origin + texCoord / DR (DR = 8, an int converted to float); paper: slotOrigin + p * slotScale.
-    const Interval coord = literal ? addF32(origin, divF32(pa, point(8.0), prec.divisionUlps)) : addF32(origin, mulF32(pa, slotScale));
+    const Interval coord =
+        literal ? addF32(origin, divF32(pa, point(8.0), prec.divisionUlps)) : addF32(origin, mulF32(pa, slotScale));
     index[a] = nearest(coord, tex_->index.dims[a], prec);
     if (literal) {
       offsets[a] = {unboundedF32()};  // mod(texCoord, DR / TEX_DIM) = mod(x, 0): unconstrained
@@ -161,12 +174,14 @@ void TimeVaryingEnvelope::paperOrLiteral(int step, const glm::dvec3& p, const En
         if (!c[3].contains(1.0)) continue;
         std::array<std::vector<Range>, 3> axes;
         for (int a = 0; a < 3; ++a)
-          for (const Interval& o : offsets[a]) axes[a].push_back(nearest(addF32(c[a], o), tex_->refinement.dims[a], prec));
+          for (const Interval& o : offsets[a])
+            axes[a].push_back(nearest(addF32(c[a], o), tex_->refinement.dims[a], prec));
         addRefinement(axes, out);
       }
 }
 
-void TimeVaryingEnvelope::texelCentre(int step, const glm::dvec3& p, const EnvelopePrecision& prec, std::vector<RgbaIntervals>& out) const {
+void TimeVaryingEnvelope::texelCentre(int step, const glm::dvec3& p, const EnvelopePrecision& prec,
+                                      std::vector<RgbaIntervals>& out) const {
   const ref::TimeVaryingLayout& L = tex_->layout;
   const auto slot = ref::indexSlot(L, step);
   const double cells = L.cells, side = L.side, r = L.blockSide;
@@ -183,7 +198,8 @@ void TimeVaryingEnvelope::texelCentre(int step, const glm::dvec3& p, const Envel
     const Interval cell = minWith(floorF32(mulF32(pa, point(cells))), cells - 1.0);
     voxel[a] = minWith(floorF32(mulF32(pa, point(side))), side - 1.0);
     for (double cv = cell.lo; cv <= cell.hi; ++cv) {
-      const Interval coord = divF32(addF32(addF32(point(slot[a] * L.cells), point(cv)), point(0.5)), indexSize, prec.divisionUlps);
+      const Interval coord =
+          divF32(addF32(addF32(point(slot[a] * L.cells), point(cv)), point(0.5)), indexSize, prec.divisionUlps);
       choices[a].push_back({cv, nearest(coord, tex_->index.dims[a], prec)});
     }
   }
@@ -202,7 +218,8 @@ void TimeVaryingEnvelope::texelCentre(int step, const glm::dvec3& p, const Envel
                 // block = floor(c * 255 + 0.5); refCoord = (block r + (voxel - cell r) + 0.5) / refinementSize.
                 const Interval block = floorF32(addF32(mulF32(c[a], point(255.0)), point(0.5)));
                 const Interval inBlock = subF32(voxel[a], mulF32(point(ch[a]->cell), point(r)));
-                const Interval coord = divF32(addF32(addF32(mulF32(block, point(r)), inBlock), point(0.5)), refSize, prec.divisionUlps);
+                const Interval coord =
+                    divF32(addF32(addF32(mulF32(block, point(r)), inBlock), point(0.5)), refSize, prec.divisionUlps);
                 axes[a].push_back(nearest(coord, tex_->refinement.dims[a], prec));
               }
               addRefinement(axes, out);
@@ -224,7 +241,8 @@ void TimeVaryingEnvelope::texelFetch(int step, const glm::dvec3& p, std::vector<
     for (double cy = cell[1].lo; cy <= cell[1].hi; ++cy)
       for (double cx = cell[0].lo; cx <= cell[0].hi; ++cx) {
         const double cv[3] = {cx, cy, cz};
-        const int t[3] = {slot[0] * L.cells + static_cast<int>(cx), slot[1] * L.cells + static_cast<int>(cy), slot[2] * L.cells + static_cast<int>(cz)};
+        const int t[3] = {slot[0] * L.cells + static_cast<int>(cx), slot[1] * L.cells + static_cast<int>(cy),
+                          slot[2] * L.cells + static_cast<int>(cz)};
         if (t[0] < 0 || t[1] < 0 || t[2] < 0 || t[0] >= di[0] || t[1] >= di[1] || t[2] >= di[2]) {
           out.push_back(anything);  // texelFetch outside the texture: undefined (GL 4.6 section 11.1.3.2)
           continue;
@@ -242,8 +260,10 @@ void TimeVaryingEnvelope::texelFetch(int step, const glm::dvec3& p, std::vector<
           outside = outside || lo < 0 || hi >= tex_->refinement.dims[a];
           axes[a].push_back({static_cast<int>(lo), static_cast<int>(hi)});
         }
-        if (outside) out.push_back(anything);
-        else addRefinement(axes, out);
+        if (outside)
+          out.push_back(anything);
+        else
+          addRefinement(axes, out);
       }
 }
 
@@ -253,9 +273,15 @@ void TimeVaryingEnvelope::fragment(int step, const glm::dvec3& p, const Envelope
   if (out.discarded) return;
   switch (variant_) {
     case ref::DecoderVariant::Literal:
-    case ref::DecoderVariant::Paper: paperOrLiteral(step, p, prec, out.colours); break;
-    case ref::DecoderVariant::TexelCentre: texelCentre(step, p, prec, out.colours); break;
-    case ref::DecoderVariant::TexelFetch: texelFetch(step, p, out.colours); break;
+    case ref::DecoderVariant::Paper:
+      paperOrLiteral(step, p, prec, out.colours);
+      break;
+    case ref::DecoderVariant::TexelCentre:
+      texelCentre(step, p, prec, out.colours);
+      break;
+    case ref::DecoderVariant::TexelFetch:
+      texelFetch(step, p, out.colours);
+      break;
   }
 }
 
@@ -279,7 +305,8 @@ AllowedColours TimeVaryingEnvelope::decoded(int step, const glm::dvec3& p, const
   return out;
 }
 
-AllowedColours TimeVaryingEnvelope::composited(int step, const ref::PlaneFrame& frame, int i, int j, const EnvelopePrecision& prec) const {
+AllowedColours TimeVaryingEnvelope::composited(int step, const ref::PlaneFrame& frame, int i, int j,
+                                               const EnvelopePrecision& prec) const {
   RgbaIntervals dst{point(0.0), point(0.0), point(0.0), point(0.0)};  // glClearColor(0, 0, 0, 0)
   Fragment f;
   for (int k = frame.planes - 1; k >= 0; --k) {
@@ -297,8 +324,9 @@ AllowedColours TimeVaryingEnvelope::composited(int step, const ref::PlaneFrame& 
   return {{dst}};
 }
 
-std::vector<std::uint8_t> envelopeTiers(const TimeVaryingEnvelope& envelope, int step, const ref::PlaneFrame& frame, bool composite,
-                                        const ref::RgbaStack& judged, int threads, std::vector<std::uint8_t>* widths) {
+std::vector<std::uint8_t> envelopeTiers(const TimeVaryingEnvelope& envelope, int step, const ref::PlaneFrame& frame,
+                                        bool composite, const ref::RgbaStack& judged, int threads,
+                                        std::vector<std::uint8_t>* widths) {
   std::vector<std::uint8_t> tier(judged.colours.size(), 0);
   if (widths) widths->assign(judged.colours.size(), 0);
   auto judge = [&](std::size_t idx, auto allowed) {
@@ -321,7 +349,8 @@ std::vector<std::uint8_t> envelopeTiers(const TimeVaryingEnvelope& envelope, int
   ref::parallelFor(frame.planes, threads, [&](int k) {
     for (int j = 0; j < frame.height; ++j)
       for (int i = 0; i < frame.width; ++i)
-        judge(static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * (j + static_cast<std::size_t>(frame.height) * k),
+        judge(static_cast<std::size_t>(i) +
+                  static_cast<std::size_t>(frame.width) * (j + static_cast<std::size_t>(frame.height) * k),
               [&](const EnvelopePrecision& p) { return envelope.decoded(step, frame.sample(i, j, k), p); });
   });
   return tier;

@@ -15,7 +15,8 @@
 //    subtexel error (`uvwBits`, computeFixedPointError), as computeNonNormalizedCoordBounds does;
 //    every texel whose cell that range touches may be read;
 //  - texel values: unorm codes converted as unormToFloatF32 (GL 4.6 section 2.3.5.1, 2.5 ULP, exact
-//    at 0 and 1; both tiers use kEnvelopePass.divisionUlps for it), float texels exact or flushed to zero when denormal (GLSL 4.60 section 4.7.1);
+//    at 0 and 1; both tiers use kEnvelopePass.divisionUlps for it), float texels exact or flushed to zero when denormal
+//    (GLSL 4.60 section 4.7.1);
 //  - texelFetch outside the texture: undefined (GL 4.6 section 11.1.3.2): any value; mod(x, 0)
 //    (the literal decoder): the quotient is unconstrained (division precision is given only for
 //    |b| >= 2^-126), so its refinement lookup may read any texel;
@@ -88,7 +89,8 @@ class TimeVaryingEnvelope {
   AllowedColours decoded(int step, const glm::dvec3& p, const EnvelopePrecision& precision) const;
   // The RGBA8 codes of pixel (i, j) after the frame's planes are composited back to front
   // (k = planes - 1 first) into a target cleared to 0: one box (the per-channel hull).
-  AllowedColours composited(int step, const ref::PlaneFrame& frame, int i, int j, const EnvelopePrecision& precision) const;
+  AllowedColours composited(int step, const ref::PlaneFrame& frame, int i, int j,
+                            const EnvelopePrecision& precision) const;
 
  private:
   struct Range {
@@ -98,8 +100,10 @@ class TimeVaryingEnvelope {
   RgbaIntervals refinementValue(int x, int y, int z) const;
   Range nearest(const Interval& s, int n, const EnvelopePrecision& precision) const;
   void addRefinement(const std::array<std::vector<Range>, 3>& axes, std::vector<RgbaIntervals>& out) const;
-  void paperOrLiteral(int step, const glm::dvec3& p, const EnvelopePrecision& precision, std::vector<RgbaIntervals>& out) const;
-  void texelCentre(int step, const glm::dvec3& p, const EnvelopePrecision& precision, std::vector<RgbaIntervals>& out) const;
+  void paperOrLiteral(int step, const glm::dvec3& p, const EnvelopePrecision& precision,
+                      std::vector<RgbaIntervals>& out) const;
+  void texelCentre(int step, const glm::dvec3& p, const EnvelopePrecision& precision,
+                   std::vector<RgbaIntervals>& out) const;
   void texelFetch(int step, const glm::dvec3& p, std::vector<RgbaIntervals>& out) const;
 
   const ref::TimeVaryingTextures* tex_;
@@ -111,7 +115,8 @@ class TimeVaryingEnvelope {
 // inside the pass envelope (kEnvelopePass), 1 only inside the quality-warning envelope
 // (kEnvelopeQualityWarning), 2 outside both. `widths`, when given, receives per sample the widest
 // channel of the pass envelope's hull, in codes (0: a single colour allowed).
-std::vector<std::uint8_t> envelopeTiers(const TimeVaryingEnvelope& envelope, int step, const ref::PlaneFrame& frame, bool composite,
-                                        const ref::RgbaStack& judged, int threads = 0, std::vector<std::uint8_t>* widths = nullptr);
+std::vector<std::uint8_t> envelopeTiers(const TimeVaryingEnvelope& envelope, int step, const ref::PlaneFrame& frame,
+                                        bool composite, const ref::RgbaStack& judged, int threads = 0,
+                                        std::vector<std::uint8_t>* widths = nullptr);
 
 }  // namespace voxref::emu

@@ -49,7 +49,8 @@ ref::CodePlanes renderCombinationGl(Context& context, const ref::CombinationText
     for (const ref::CombinationPass& pass : textures.passes) {
       const ref::GridTexture& t = textures.textures[pass.texture];
       gl.BindTexture(GL_TEXTURE_3D, gridTextures[pass.texture].id());
-      gl.Uniform3f(nodeScale, std::ldexp(1.0f, t.levels[0]), std::ldexp(1.0f, t.levels[1]), std::ldexp(1.0f, t.levels[2]));
+      gl.Uniform3f(nodeScale, std::ldexp(1.0f, t.levels[0]), std::ldexp(1.0f, t.levels[1]),
+                   std::ldexp(1.0f, t.levels[2]));
       gl.Uniform3f(extent, float(t.dims[0]), float(t.dims[1]), float(t.dims[2]));
       gl.Uniform3f(brickOrigin, float(t.origin[0]), float(t.origin[1]), float(t.origin[2]));
       gl.Uniform3f(cellLo, float(t.cellLo[0]), float(t.cellLo[1]), float(t.cellLo[2]));

@@ -6,16 +6,19 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "gpu/gl_error.h"
 #include "gpu/context_backends.h"
+#include "gpu/gl_error.h"
 
 namespace voxref::gpu {
 
 std::string_view name(Driver d) {
   switch (d) {
-    case Driver::Llvmpipe: return "llvmpipe";
-    case Driver::Softpipe: return "softpipe";
-    case Driver::Egl: return "egl";
+    case Driver::Llvmpipe:
+      return "llvmpipe";
+    case Driver::Softpipe:
+      return "softpipe";
+    case Driver::Egl:
+      return "egl";
   }
   return "?";
 }
@@ -33,8 +36,9 @@ std::unique_ptr<Context> createContext(Driver driver) {
 
 std::vector<std::pair<std::string, std::string>> environmentPins() {
   std::vector<std::pair<std::string, std::string>> pins;
-  static constexpr const char* kAlways[] = {"GALLIUM_DRIVER", "GALLIVM_PERF", "LP_NATIVE_VECTOR_WIDTH", "LP_PERF", "GALLIUM_OVERRIDE_CPU_CAPS",
-                                            "EGL_PLATFORM"};
+  static constexpr const char* kAlways[] = {
+      "GALLIUM_DRIVER", "GALLIVM_PERF", "LP_NATIVE_VECTOR_WIDTH", "LP_PERF", "GALLIUM_OVERRIDE_CPU_CAPS",
+      "EGL_PLATFORM"};
   for (const char* var : kAlways) {
     const char* v = std::getenv(var);
     pins.emplace_back(var, v ? v : "(unset)");
@@ -43,9 +47,11 @@ std::vector<std::pair<std::string, std::string>> environmentPins() {
   // Mesa's and the GL and EGL loaders' (MESA_LOADER_DRIVER_OVERRIDE, LIBGL_ALWAYS_SOFTWARE,
   // MESA_GL_VERSION_OVERRIDE, __EGL_VENDOR_LIBRARY_FILENAMES ...), the Vulkan loader's for zink
   // (VK_ICD_FILENAMES, VK_DRIVER_FILES ...), the drivers' own debug settings, the dynamic linker's.
-  static constexpr const char* kPrefixes[] = {"MESA_", "LIBGL_", "GALLIUM_", "GALLIVM_", "LP_", "SOFTPIPE_", "ZINK_", "LVP_", "NIR_", "GLSL_",
-                                              "VK_", "EGL_", "__EGL_", "__GLX_", "__GL_", "DRI_", "RADV_", "AMD_", "ANV_", "INTEL_", "NV_",
-                                              "NOUVEAU_", "LD_LIBRARY_PATH", "LD_PRELOAD", "DISPLAY", "WAYLAND_DISPLAY"};
+  static constexpr const char* kPrefixes[] = {
+      "MESA_",   "LIBGL_",         "GALLIUM_", "GALLIVM_", "LP_",    "SOFTPIPE_", "ZINK_",           "LVP_",
+      "NIR_",    "GLSL_",          "VK_",      "EGL_",     "__EGL_", "__GLX_",    "__GL_",           "DRI_",
+      "RADV_",   "AMD_",           "ANV_",     "INTEL_",   "NV_",    "NOUVEAU_",  "LD_LIBRARY_PATH", "LD_PRELOAD",
+      "DISPLAY", "WAYLAND_DISPLAY"};
   std::vector<std::pair<std::string, std::string>> more;
   for (char** e = environ; e && *e; ++e) {
     const std::string entry(*e);

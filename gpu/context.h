@@ -25,8 +25,8 @@ struct ContextInfo {
   std::string api;  // "OSMesa" or "EGL (<platform>)"
   std::string renderer, version, vendor, glslVersion;
   int glMajor = 0, glMinor = 0;
-  int glslNumber = 0;         // e.g. 450, 330
-  int max3DTextureSize = 0;   // GL_MAX_3D_TEXTURE_SIZE
+  int glslNumber = 0;        // e.g. 450, 330
+  int max3DTextureSize = 0;  // GL_MAX_3D_TEXTURE_SIZE
   int maxRenderbufferSize = 0;
   bool supportsPrecise() const { return glslNumber >= 400; }  // `precise` needs GLSL 4.00
 };

@@ -8,6 +8,6 @@
 namespace voxref::gpu {
 
 std::unique_ptr<Context> createOsmesaContext(Driver driver);  // llvmpipe or softpipe
-std::unique_ptr<Context> createEglContext();                    // loads libEGL.so.1 at run time
+std::unique_ptr<Context> createEglContext();                  // loads libEGL.so.1 at run time
 
 }  // namespace voxref::gpu

@@ -13,8 +13,8 @@
 #include <string>
 #include <string_view>
 
-#include "gpu/gl_error.h"
 #include "gpu/context_backends.h"
+#include "gpu/gl_error.h"
 
 namespace voxref::gpu {
 namespace {
@@ -61,16 +61,24 @@ class EglContext final : public Context {
     } else {
       throw GlUnavailable("EGL_PLATFORM=" + wanted + " is not supported (device or surfaceless)");
     }
-    if (display_ == EGL_NO_DISPLAY) throw GlUnavailable("eglGetPlatformDisplay failed on the " + platform + " platform");
+    if (display_ == EGL_NO_DISPLAY)
+      throw GlUnavailable("eglGetPlatformDisplay failed on the " + platform + " platform");
     auto initialize = lib_.get<PFNEGLINITIALIZEPROC>("eglInitialize");
     terminate_ = lib_.get<PFNEGLTERMINATEPROC>("eglTerminate");
-    if (!initialize(display_, nullptr, nullptr)) throw GlUnavailable("eglInitialize failed on the " + platform + " platform");
-    if (!lib_.get<PFNEGLBINDAPIPROC>("eglBindAPI")(EGL_OPENGL_API)) throw GlUnavailable("EGL cannot bind the OpenGL API");
+    if (!initialize(display_, nullptr, nullptr))
+      throw GlUnavailable("eglInitialize failed on the " + platform + " platform");
+    if (!lib_.get<PFNEGLBINDAPIPROC>("eglBindAPI")(EGL_OPENGL_API))
+      throw GlUnavailable("EGL cannot bind the OpenGL API");
     auto createContext = lib_.get<PFNEGLCREATECONTEXTPROC>("eglCreateContext");
     destroyContext_ = lib_.get<PFNEGLDESTROYCONTEXTPROC>("eglDestroyContext");
     for (const auto& [major, minor] : {std::pair{4, 5}, std::pair{3, 3}}) {
-      const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, major, EGL_CONTEXT_MINOR_VERSION, minor,
-                                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+      const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                major,
+                                EGL_CONTEXT_MINOR_VERSION,
+                                minor,
+                                EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                EGL_NONE};
       context_ = createContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
       if (context_ != EGL_NO_CONTEXT) break;
     }

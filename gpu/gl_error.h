@@ -34,7 +34,8 @@ class GlError : public std::runtime_error {
 // numbers are those of the source file (the prelude voxref adds ends with #line 1).
 class ShaderError : public std::runtime_error {
  public:
-  ShaderError(const std::string& what, std::string infoLog) : std::runtime_error(what + ":\n" + infoLog), log_(std::move(infoLog)) {}
+  ShaderError(const std::string& what, std::string infoLog)
+      : std::runtime_error(what + ":\n" + infoLog), log_(std::move(infoLog)) {}
   const std::string& infoLog() const { return log_; }
 
  private:

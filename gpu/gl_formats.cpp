@@ -9,11 +9,16 @@ namespace voxref::gpu {
 
 TexelUpload texelUpload(ref::TexelFormat format) {
   switch (format) {
-    case ref::TexelFormat::R8: return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
-    case ref::TexelFormat::RGBA8: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
-    case ref::TexelFormat::R16: return {GL_R16, GL_RED, GL_UNSIGNED_SHORT};
-    case ref::TexelFormat::R16F: return {GL_R16F, GL_RED, GL_HALF_FLOAT};
-    case ref::TexelFormat::R32F: return {GL_R32F, GL_RED, GL_FLOAT};
+    case ref::TexelFormat::R8:
+      return {GL_R8, GL_RED, GL_UNSIGNED_BYTE};
+    case ref::TexelFormat::RGBA8:
+      return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
+    case ref::TexelFormat::R16:
+      return {GL_R16, GL_RED, GL_UNSIGNED_SHORT};
+    case ref::TexelFormat::R16F:
+      return {GL_R16F, GL_RED, GL_HALF_FLOAT};
+    case ref::TexelFormat::R32F:
+      return {GL_R32F, GL_RED, GL_FLOAT};
   }
   throw GlUnsupported("unknown texel format");
 }
@@ -28,9 +33,12 @@ std::vector<unsigned char> packTexels(ref::TexelFormat format, const std::vector
 
 GLint glWrap(ref::Wrap wrap) {
   switch (wrap) {
-    case ref::Wrap::ClampToEdge: return GL_CLAMP_TO_EDGE;
-    case ref::Wrap::Repeat: return GL_REPEAT;
-    case ref::Wrap::ClampToBorder: return GL_CLAMP_TO_BORDER;
+    case ref::Wrap::ClampToEdge:
+      return GL_CLAMP_TO_EDGE;
+    case ref::Wrap::Repeat:
+      return GL_REPEAT;
+    case ref::Wrap::ClampToBorder:
+      return GL_CLAMP_TO_BORDER;
   }
   return GL_CLAMP_TO_EDGE;
 }
@@ -41,22 +49,32 @@ GLenum glBlendEquationOf(ref::BlendEquation e) {
 
 GLenum colorInternalFormat(ref::FramebufferFormat format) {
   switch (format) {
-    case ref::FramebufferFormat::RGBA8: return GL_RGBA8;
-    case ref::FramebufferFormat::RGBA16: return GL_RGBA16;
-    case ref::FramebufferFormat::RGBA16F: return GL_RGBA16F;
-    case ref::FramebufferFormat::RGBA32F: return GL_RGBA32F;
-    case ref::FramebufferFormat::RGBA12: break;
+    case ref::FramebufferFormat::RGBA8:
+      return GL_RGBA8;
+    case ref::FramebufferFormat::RGBA16:
+      return GL_RGBA16;
+    case ref::FramebufferFormat::RGBA16F:
+      return GL_RGBA16F;
+    case ref::FramebufferFormat::RGBA32F:
+      return GL_RGBA32F;
+    case ref::FramebufferFormat::RGBA12:
+      break;
   }
   throw GlUnsupported("GL has no " + std::string(ref::name(format)) + " colour format");
 }
 
 ReadbackType readbackType(ref::FramebufferFormat format) {
   switch (format) {
-    case ref::FramebufferFormat::RGBA8: return {GL_UNSIGNED_BYTE, 1};
-    case ref::FramebufferFormat::RGBA16: return {GL_UNSIGNED_SHORT, 2};
-    case ref::FramebufferFormat::RGBA16F: return {GL_HALF_FLOAT, 2};
-    case ref::FramebufferFormat::RGBA32F: return {GL_FLOAT, 4};
-    case ref::FramebufferFormat::RGBA12: break;
+    case ref::FramebufferFormat::RGBA8:
+      return {GL_UNSIGNED_BYTE, 1};
+    case ref::FramebufferFormat::RGBA16:
+      return {GL_UNSIGNED_SHORT, 2};
+    case ref::FramebufferFormat::RGBA16F:
+      return {GL_HALF_FLOAT, 2};
+    case ref::FramebufferFormat::RGBA32F:
+      return {GL_FLOAT, 4};
+    case ref::FramebufferFormat::RGBA12:
+      break;
   }
   throw GlUnsupported("GL has no " + std::string(ref::name(format)) + " colour format");
 }

@@ -27,19 +27,21 @@ GlHandle::~GlHandle() {
 
 Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, ref::TexelFormat format,
                      const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler)
-    : Texture3D(gl, max3DTextureSize, dims,
-                [&] {
-                  const TexelUpload up = texelUpload(format);
-                  return TextureUpload{up.internalFormat, up.format, up.type};
-                }(),
-                packTexels(format, codes).data(), sampler) {}
+    : Texture3D(
+          gl, max3DTextureSize, dims,
+          [&] {
+            const TexelUpload up = texelUpload(format);
+            return TextureUpload{up.internalFormat, up.format, up.type};
+          }(),
+          packTexels(format, codes).data(), sampler) {}
 
-Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& up, const void* pixels,
-                     const ref::SamplerState& sampler) {
+Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& up,
+                     const void* pixels, const ref::SamplerState& sampler) {
   for (int e : dims)
     if (e > max3DTextureSize)
-      throw GlUnsupported("a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" + std::to_string(dims[2]) +
-                          " texture exceeds GL_MAX_3D_TEXTURE_SIZE " + std::to_string(max3DTextureSize));
+      throw GlUnsupported("a " + std::to_string(dims[0]) + "x" + std::to_string(dims[1]) + "x" +
+                          std::to_string(dims[2]) + " texture exceeds GL_MAX_3D_TEXTURE_SIZE " +
+                          std::to_string(max3DTextureSize));
   GLuint id = 0;
   gl.GenTextures(1, &id);
   handle_ = GlHandle(&gl, id, [](const GlApi& g, GLuint i) { g.DeleteTextures(1, &i); });
@@ -57,11 +59,12 @@ Texture3D::Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& di
   gl.TexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 0);
   const GLfloat border[4] = {static_cast<GLfloat>(sampler.borderRed), 0.0f, 0.0f, 0.0f};
   gl.TexParameterfv(GL_TEXTURE_3D, GL_TEXTURE_BORDER_COLOR, border);
-  checkGl(gl, "creating a 3D texture (internal format 0x" + [&] {
-    char b[16];
-    std::snprintf(b, sizeof b, "%x", up.internalFormat);
-    return std::string(b);
-  }() + ")");
+  checkGl(
+      gl, "creating a 3D texture (internal format 0x" + [&] {
+        char b[16];
+        std::snprintf(b, sizeof b, "%x", up.internalFormat);
+        return std::string(b);
+      }() + ")");
 }
 
 // --- ColorTarget -----------------------------------------------------------------------------
@@ -118,7 +121,8 @@ void ColorTarget::readRgbaCodes(std::vector<std::array<std::uint32_t, 4>>& out) 
   checkGl(*gl_, "reading back the " + std::string(ref::name(format_)) + " target (RGBA)");
   out.assign(n, {0, 0, 0, 0});
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t c = 0; c < 4; ++c) std::memcpy(&out[i][c], bytes.data() + (i * 4 + c) * rt.bytes, rt.bytes);  // little endian
+    for (std::size_t c = 0; c < 4; ++c)
+      std::memcpy(&out[i][c], bytes.data() + (i * 4 + c) * rt.bytes, rt.bytes);  // little endian
 }
 
 void ColorTarget::readRgba8(std::vector<std::array<std::uint8_t, 4>>& out) const {
@@ -146,8 +150,8 @@ std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
 GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view source, std::string_view sourceName,
                std::string_view library = {}) {
   const std::string version = glslNumber >= 450 ? "450 core" : glslNumber >= 400 ? "400 core" : "330 core";
-  const std::string prelude = "#version " + version + "\n#define PRECISE " + (glslNumber >= 400 ? "precise" : "") + "\n" +
-                              std::string(library) + "\n#line 1\n";
+  const std::string prelude = "#version " + version + "\n#define PRECISE " + (glslNumber >= 400 ? "precise" : "") +
+                              "\n" + std::string(library) + "\n#line 1\n";
   const std::string full = prelude + std::string(source);
   const GLuint shader = gl.CreateShader(stage);
   const char* text = full.c_str();
@@ -158,9 +162,9 @@ GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view s
   if (!ok) {
     const std::string log = infoLog(shader, gl.GetShaderiv, gl.GetShaderInfoLog);
     gl.DeleteShader(shader);
-    throw ShaderError(std::string(sourceName) + (stage == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") +
-                          " failed to compile",
-                      log);
+    throw ShaderError(
+        std::string(sourceName) + (stage == GL_VERTEX_SHADER ? " (vertex)" : " (fragment)") + " failed to compile",
+        log);
   }
   return shader;
 }
@@ -187,7 +191,9 @@ Program::Program(const GlApi& gl, int glslNumber, std::string_view vertexSource,
   gl.DeleteShader(fs);
   GLint ok = 0;
   gl.GetProgramiv(program, GL_LINK_STATUS, &ok);
-  if (!ok) throw ShaderError(std::string(sourceName) + " failed to link", infoLog(program, gl.GetProgramiv, gl.GetProgramInfoLog));
+  if (!ok)
+    throw ShaderError(std::string(sourceName) + " failed to link",
+                      infoLog(program, gl.GetProgramiv, gl.GetProgramInfoLog));
   checkGl(gl, "building program " + name_);
 }
 
@@ -195,7 +201,8 @@ void Program::use() const { gl_->UseProgram(handle_.id()); }
 
 GLint Program::uniform(const char* uniformName) const {
   const GLint loc = gl_->GetUniformLocation(handle_.id(), uniformName);
-  if (loc < 0 && uniforms_ == Uniforms::Required) throw GlError("program " + name_ + " has no active uniform '" + uniformName + "'");
+  if (loc < 0 && uniforms_ == Uniforms::Required)
+    throw GlError("program " + name_ + " has no active uniform '" + uniformName + "'");
   return loc;
 }
 

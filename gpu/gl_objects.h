@@ -48,8 +48,8 @@ class Texture3D {
   Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, ref::TexelFormat format,
             const std::vector<std::uint32_t>& codes, const ref::SamplerState& sampler);
   // Any format: `pixels` in the layout of `upload` (glTexImage3D's format and type).
-  Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& upload, const void* pixels,
-            const ref::SamplerState& sampler);
+  Texture3D(const GlApi& gl, int max3DTextureSize, const ref::Dims3& dims, const TextureUpload& upload,
+            const void* pixels, const ref::SamplerState& sampler);
   GLuint id() const { return handle_.id(); }
 
  private:

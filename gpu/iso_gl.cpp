@@ -17,10 +17,11 @@ namespace {
 // An RGBA8 colour and a DEPTH_COMPONENT32F depth renderbuffer (float depth reads back exactly).
 class IsoTarget {
  public:
-  IsoTarget(const GlApi& gl, int maxRenderbufferSize, int width, int height) : gl_(&gl), width_(width), height_(height) {
+  IsoTarget(const GlApi& gl, int maxRenderbufferSize, int width, int height)
+      : gl_(&gl), width_(width), height_(height) {
     if (width > maxRenderbufferSize || height > maxRenderbufferSize)
-      throw GlUnsupported("a " + std::to_string(width) + "x" + std::to_string(height) + " target exceeds GL_MAX_RENDERBUFFER_SIZE " +
-                          std::to_string(maxRenderbufferSize));
+      throw GlUnsupported("a " + std::to_string(width) + "x" + std::to_string(height) +
+                          " target exceeds GL_MAX_RENDERBUFFER_SIZE " + std::to_string(maxRenderbufferSize));
     color_ = renderbuffer(GL_RGBA8);
     ids_ = renderbuffer(GL_R32UI);
     depth_ = renderbuffer(GL_DEPTH_COMPONENT32F);
@@ -78,7 +79,9 @@ GlHandle buffer(const GlApi& gl, GLenum target, const void* data, std::size_t by
   return h;
 }
 
-glm::mat4 mvpOf(const ref::ViewCamera& camera) { return glm::mat4(ref::projectionMatrix(camera) * ref::viewMatrix(camera)); }
+glm::mat4 mvpOf(const ref::ViewCamera& camera) {
+  return glm::mat4(ref::projectionMatrix(camera) * ref::viewMatrix(camera));
+}
 
 // The mesh in vertex buffers, drawn with the shading program (colour writes as the caller set).
 class MeshDraw {
@@ -102,7 +105,8 @@ class MeshDraw {
     program_.use();
     const glm::mat4 mvp = mvpOf(camera);
     gl_->UniformMatrix4fv(program_.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
-    gl_->Uniform3f(program_.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y), static_cast<float>(camera.eye.z));
+    gl_->Uniform3f(program_.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
+                   static_cast<float>(camera.eye.z));
     gl_->Uniform1f(program_.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
     vao_.bind();
     if (count_ > 0) gl_->DrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
@@ -134,9 +138,11 @@ void clearTarget(const GlApi& gl) {
 
 // The 12 triangles of a box, as 36 vertices.
 void appendBox(const QueryBox& b, std::vector<float>& out) {
-  static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
+  static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
+                                       {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
   auto corner = [&](int c) {
-    return std::array<float, 3>{static_cast<float>((c & 1) ? b.hi[0] : b.lo[0]), static_cast<float>((c & 2) ? b.hi[1] : b.lo[1]),
+    return std::array<float, 3>{static_cast<float>((c & 1) ? b.hi[0] : b.lo[0]),
+                                static_cast<float>((c & 2) ? b.hi[1] : b.lo[1]),
                                 static_cast<float>((c & 4) ? b.hi[2] : b.lo[2])};
   };
   for (const auto& f : kFaces)
@@ -174,7 +180,8 @@ PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {
   std::string control(shaders::kIsoMeshFrag);
   const std::string read = "uint(gl_PrimitiveID) + 1u";
   const std::size_t at = control.find(read);
-  if (at == std::string::npos) throw GlError("iso_mesh.frag no longer writes uint(gl_PrimitiveID) + 1u: the primitive-id check needs updating");
+  if (at == std::string::npos)
+    throw GlError("iso_mesh.frag no longer writes uint(gl_PrimitiveID) + 1u: the primitive-id check needs updating");
   control.replace(at, read.size(), "1u");
   PrimitiveIdCheck out;
   auto draw = [&](std::string_view fragment, std::size_t& drawn, std::size_t* right) {
@@ -196,8 +203,8 @@ PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {
   return out;
 }
 
-std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder, const std::vector<QueryBox>& boxes,
-                                              const ref::ViewCamera& camera) {
+std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
+                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera) {
   const GlApi& gl = context.gl();
   const ref::CameraBasis basis = ref::cameraBasis(camera);
   IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
@@ -213,7 +220,8 @@ std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMe
   const GlHandle vbo = buffer(gl, GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(float));
   gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
   gl.EnableVertexAttribArray(0);
-  const Program program(gl, context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag, "occlusion_box.frag");
+  const Program program(gl, context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag,
+                        "occlusion_box.frag");
   program.use();
   const glm::mat4 mvp = mvpOf(camera);
   gl.UniformMatrix4fv(program.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
@@ -228,7 +236,8 @@ std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMe
     // A box reaching the near plane would be clipped: not testable, so visible.
     double nearest = 1e300;
     for (int c = 0; c < 8; ++c) {
-      const glm::dvec3 p((c & 1) ? boxes[i].hi[0] : boxes[i].lo[0], (c & 2) ? boxes[i].hi[1] : boxes[i].lo[1], (c & 4) ? boxes[i].hi[2] : boxes[i].lo[2]);
+      const glm::dvec3 p((c & 1) ? boxes[i].hi[0] : boxes[i].lo[0], (c & 2) ? boxes[i].hi[1] : boxes[i].lo[1],
+                         (c & 4) ? boxes[i].hi[2] : boxes[i].lo[2]);
       nearest = std::min(nearest, glm::dot(p - camera.eye, basis.forward));
     }
     if (nearest <= camera.nearPlane) continue;

@@ -1,7 +1,7 @@
 // The isosurface on a real GL context (Gregorski et al. 2004, sections 4 and 5): the extracted
 // mesh drawn from indexed vertex buffers with two-sided headlight Lambert shading
-// (reference/iso/iso_shading.h) into RGBA8 + an R32UI triangle-id buffer + a float32 depth buffer, and occlusion queries on
-// axis-aligned boxes against the depth of a mesh (the previous frame's surface, as the paper).
+// (reference/iso/iso_shading.h) into RGBA8 + an R32UI triangle-id buffer + a float32 depth buffer, and occlusion
+// queries on axis-aligned boxes against the depth of a mesh (the previous frame's surface, as the paper).
 //
 // Conventions are ref::ViewCamera's (row 0 at the bottom, the pixel centre is the sample point).
 // The MVP matrix is computed in double and rounded to float once.
@@ -34,10 +34,10 @@ IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref
 // id 1. softpipe (Mesa 22.3) draws nothing with the first, and raises no GL error
 // (docs/profiles.md).
 struct PrimitiveIdCheck {
-  std::size_t pixels = 0;            // of the target
-  std::size_t drawnWithId = 0;       // pixels the mesh program wrote
-  std::size_t rightIds = 0;          // of those, the ones whose id is 1 (the first triangle + 1)
-  std::size_t drawnByControl = 0;    // pixels the control program wrote
+  std::size_t pixels = 0;          // of the target
+  std::size_t drawnWithId = 0;     // pixels the mesh program wrote
+  std::size_t rightIds = 0;        // of those, the ones whose id is 1 (the first triangle + 1)
+  std::size_t drawnByControl = 0;  // pixels the control program wrote
   bool driverDropsPrimitiveIdDraws() const { return drawnByControl == pixels && drawnWithId < pixels; }
 };
 PrimitiveIdCheck checkPrimitiveIdGl(Context& context);
@@ -51,7 +51,7 @@ struct QueryBox {
 // within the near plane of the eye cannot be tested (it would be clipped): its count is reported
 // as kNotTested and the caller must treat it as visible.
 inline constexpr std::uint32_t kNotTested = 0xffffffffu;
-std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder, const std::vector<QueryBox>& boxes,
-                                              const ref::ViewCamera& camera);
+std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
+                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera);
 
 }  // namespace voxref::gpu

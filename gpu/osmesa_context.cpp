@@ -38,7 +38,8 @@ const OsmesaLibrary& osmesa() {
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle)
       throw GlUnavailable("cannot load the OSMesa library " + path + ": " + dlerror() +
-                          (env ? " (VOXREF_OSMESA names it)" : " (Debian: apt-get install libosmesa6; or set VOXREF_OSMESA to a libOSMesa)"));
+                          (env ? " (VOXREF_OSMESA names it)"
+                               : " (Debian: apt-get install libosmesa6; or set VOXREF_OSMESA to a libOSMesa)"));
     OsmesaLibrary l;
     auto get = [&](auto& slot, const char* fn) {
       slot = reinterpret_cast<std::remove_reference_t<decltype(slot)>>(dlsym(handle, fn));
@@ -62,10 +63,21 @@ class OsmesaContext final : public Context {
       throw GlUnavailable("GALLIUM_DRIVER=" + std::string(env) + " in the environment contradicts --driver " + wanted);
     setenv("GALLIUM_DRIVER", wanted.c_str(), 1);
     const int major = driver == Driver::Softpipe ? 3 : 4, minor = driver == Driver::Softpipe ? 3 : 5;
-    const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,  // RGBA, not BGRA: BGRA enables llvmpipe's 8-bit linear path
-                           OSMESA_DEPTH_BITS, 0, OSMESA_STENCIL_BITS, 0, OSMESA_ACCUM_BITS, 0,
-                           OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, major,
-                           OSMESA_CONTEXT_MINOR_VERSION, minor, 0};
+    const int attribs[] = {OSMESA_FORMAT,
+                           OSMESA_RGBA,  // RGBA, not BGRA: BGRA enables llvmpipe's 8-bit linear path
+                           OSMESA_DEPTH_BITS,
+                           0,
+                           OSMESA_STENCIL_BITS,
+                           0,
+                           OSMESA_ACCUM_BITS,
+                           0,
+                           OSMESA_PROFILE,
+                           OSMESA_CORE_PROFILE,
+                           OSMESA_CONTEXT_MAJOR_VERSION,
+                           major,
+                           OSMESA_CONTEXT_MINOR_VERSION,
+                           minor,
+                           0};
     ctx_ = lib_.createContextAttribs(attribs, nullptr);
     if (!ctx_)
       throw GlUnavailable("OSMesa could not create a " + std::to_string(major) + "." + std::to_string(minor) +

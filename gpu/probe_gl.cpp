@@ -20,7 +20,8 @@ ref::ProbeFrame drawSweep(Context& context, const ref::ProbeSweep& sweep) {
       }
       for (int b = 0; b < 4; ++b) bytes.push_back(static_cast<unsigned char>(c >> (8 * b)));  // little endian
     }
-  const TextureUpload upload = sweep.unorm8 ? TextureUpload{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE} : TextureUpload{GL_RGBA32F, GL_RGBA, GL_FLOAT};
+  const TextureUpload upload =
+      sweep.unorm8 ? TextureUpload{GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE} : TextureUpload{GL_RGBA32F, GL_RGBA, GL_FLOAT};
   const Texture3D texture(gl, info.max3DTextureSize, ref::Dims3{sweep.texels, 1, 1}, upload, bytes.data(),
                           ref::SamplerState{ref::Filter::Linear, sweep.wrap, 0.0});
   const Program program(gl, info.glslNumber, shaders::kFullscreenVert, shaders::kProbeSweepFrag, "probe_sweep.frag");

@@ -5,13 +5,16 @@
 namespace voxref::gpu {
 
 const std::vector<ShaderStage>& shaderStages() {
-  const std::string_view vs = shaders::kFullscreenVert, lib = shaders::kSamplePointGlsl, decoders = "Every decoder stage";
+  const std::string_view vs = shaders::kFullscreenVert, lib = shaders::kSamplePointGlsl,
+                         decoders = "Every decoder stage";
   static const std::vector<ShaderStage> stages = {
       {"combination", "combination.frag", shaders::kCombinationFrag, vs, lib, {}},
       {"timevarying_literal", "timevarying_literal.frag", shaders::kTimevaryingLiteralFrag, vs, lib, decoders},
       {"timevarying_paper", "timevarying_paper.frag", shaders::kTimevaryingPaperFrag, vs, lib, decoders},
-      {"timevarying_texel_centre", "timevarying_texel_centre.frag", shaders::kTimevaryingTexelCentreFrag, vs, lib, decoders},
-      {"timevarying_texel_fetch", "timevarying_texel_fetch.frag", shaders::kTimevaryingTexelFetchFrag, vs, lib, decoders},
+      {"timevarying_texel_centre", "timevarying_texel_centre.frag", shaders::kTimevaryingTexelCentreFrag, vs, lib,
+       decoders},
+      {"timevarying_texel_fetch", "timevarying_texel_fetch.frag", shaders::kTimevaryingTexelFetchFrag, vs, lib,
+       decoders},
   };
   return stages;
 }
@@ -24,7 +27,9 @@ const ShaderStage* findShaderStage(std::string_view name) {
 
 const ShaderStage& combinationStage() { return *findShaderStage("combination"); }
 
-const ShaderStage& decoderStage(ref::DecoderVariant v) { return *findShaderStage("timevarying_" + std::string(ref::name(v))); }
+const ShaderStage& decoderStage(ref::DecoderVariant v) {
+  return *findShaderStage("timevarying_" + std::string(ref::name(v)));
+}
 
 namespace {
 
@@ -56,7 +61,8 @@ Program buildStageProgram(Context& context, const ShaderStage& stage, const Shad
   if (!user || user->stage != stage.name)
     return Program(gl, glsl, stage.vertexSource, stage.fragmentSource, stage.fragmentFile, stage.library);
   ++user->programsBuilt;
-  return Program(gl, glsl, stage.vertexSource, user->source, user->fileName, stage.library, Program::Uniforms::Optional);
+  return Program(gl, glsl, stage.vertexSource, user->source, user->fileName, stage.library,
+                 Program::Uniforms::Optional);
 }
 
 }  // namespace voxref::gpu

@@ -38,8 +38,8 @@ struct ShaderStage {
 const std::vector<ShaderStage>& shaderStages();
 // The stage named `name`, or nullptr.
 const ShaderStage* findShaderStage(std::string_view name);
-const ShaderStage& combinationStage();                     // combination_gl.h
-const ShaderStage& decoderStage(ref::DecoderVariant v);    // timevarying_gl.h
+const ShaderStage& combinationStage();                   // combination_gl.h
+const ShaderStage& decoderStage(ref::DecoderVariant v);  // timevarying_gl.h
 
 // The stage's interface from docs/shader-interface.md (uniforms, samplers, inputs, outputs): its
 // family's section, then its own; empty when the document has neither. commonInterface(): the

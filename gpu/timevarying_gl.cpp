@@ -11,15 +11,20 @@ namespace {
 
 TextureUpload indexUpload(ref::IndexEncoding e) {
   switch (e) {
-    case ref::IndexEncoding::NormalizedRgba16: return {GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT};
-    case ref::IndexEncoding::NormalizedFloat: return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
-    default: return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
+    case ref::IndexEncoding::NormalizedRgba16:
+      return {GL_RGBA16, GL_RGBA, GL_UNSIGNED_SHORT};
+    case ref::IndexEncoding::NormalizedFloat:
+      return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
+    default:
+      return {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE};
   }
 }
 
 // Index texels in the upload's type: bytes, shorts, or the float bits as they are.
 std::vector<unsigned char> indexBytes(const ref::IndexTexture& index) {
-  const std::size_t cb = index.encoding == ref::IndexEncoding::NormalizedRgba16 ? 2 : index.encoding == ref::IndexEncoding::NormalizedFloat ? 4 : 1;
+  const std::size_t cb = index.encoding == ref::IndexEncoding::NormalizedRgba16  ? 2
+                         : index.encoding == ref::IndexEncoding::NormalizedFloat ? 4
+                                                                                 : 1;
   std::vector<unsigned char> out(index.texels.size() * cb);
   for (std::size_t i = 0; i < index.texels.size(); ++i)
     for (std::size_t k = 0; k < cb; ++k) out[i * cb + k] = static_cast<unsigned char>(index.texels[i] >> (8 * k));
@@ -28,7 +33,8 @@ std::vector<unsigned char> indexBytes(const ref::IndexTexture& index) {
 
 // Sets the decoder's uniforms for time step `step` (a user's shader may leave some out: its
 // Program tolerates them, shader_override.h).
-void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVariant v, const ref::TimeVaryingLayout& L, int step) {
+void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVariant v, const ref::TimeVaryingLayout& L,
+                        int step) {
   const auto slot = ref::indexSlot(L, step);
   const float S = static_cast<float>(L.indexSlots), n = static_cast<float>(L.cells);
   switch (v) {
@@ -42,7 +48,8 @@ void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVar
       gl.Uniform1f(program.uniform("blockScale"), n / static_cast<float>(L.blockSlots));
       break;
     case ref::DecoderVariant::TexelCentre:
-      gl.Uniform3f(program.uniform("slotTexel"), float(slot[0] * L.cells), float(slot[1] * L.cells), float(slot[2] * L.cells));
+      gl.Uniform3f(program.uniform("slotTexel"), float(slot[0] * L.cells), float(slot[1] * L.cells),
+                   float(slot[2] * L.cells));
       gl.Uniform1f(program.uniform("indexSize"), float(L.indexSlots * L.cells));
       gl.Uniform1f(program.uniform("cells"), n);
       gl.Uniform1f(program.uniform("side"), float(L.side));
@@ -63,16 +70,19 @@ void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVar
 enum class Mode { DecodePlanes, Composite };
 
 ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::DecoderVariant variant, int step,
-                   const ref::PlaneFrame& frame, Mode mode, const std::function<void(int)>& progress, const ShaderOverride* shader) {
+                   const ref::PlaneFrame& frame, Mode mode, const std::function<void(int)>& progress,
+                   const ShaderOverride* shader) {
   if (const std::string why = ref::decoderIncompatibility(variant, tex.layout, tex.index.encoding); !why.empty())
     throw std::invalid_argument(why);
-  if (step < 0 || step >= tex.layout.timeSteps) throw std::invalid_argument("time step " + std::to_string(step) + " is outside the series");
+  if (step < 0 || step >= tex.layout.timeSteps)
+    throw std::invalid_argument("time step " + std::to_string(step) + " is outside the series");
   const GlApi& gl = context.gl();
   const ContextInfo& info = context.info();
   const ref::SamplerState nearest{ref::Filter::Nearest, ref::Wrap::ClampToEdge, 0.0};
   const std::vector<unsigned char> ib = indexBytes(tex.index);
   Texture3D index(gl, info.max3DTextureSize, tex.index.dims, indexUpload(tex.index.encoding), ib.data(), nearest);
-  Texture3D refinement(gl, info.max3DTextureSize, tex.refinement.dims, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE}, tex.refinement.texels.data(), nearest);
+  Texture3D refinement(gl, info.max3DTextureSize, tex.refinement.dims, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE},
+                       tex.refinement.texels.data(), nearest);
   ColorTarget target(gl, info.maxRenderbufferSize, ref::FramebufferFormat::RGBA8, frame.width, frame.height);
   const Program program = buildStageProgram(context, decoderStage(variant), shader);
   VertexArray vao(gl);
@@ -122,13 +132,15 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
 
 }  // namespace
 
-ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress, const ShaderOverride* shader) {
+ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                              int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress,
+                              const ShaderOverride* shader) {
   return run(context, textures, variant, step, frame, Mode::DecodePlanes, progress, shader);
 }
 
-ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress, const ShaderOverride* shader) {
+ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                           int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress,
+                           const ShaderOverride* shader) {
   return run(context, textures, variant, step, frame, Mode::Composite, progress, shader);
 }
 

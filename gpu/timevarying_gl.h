@@ -20,13 +20,13 @@ namespace voxref::gpu {
 // textures (decoderIncompatibility), ShaderError when `shader` does not compile. `shader`: a
 // user's fragment shader in place of the variant's (shader_override.h); nullptr or another
 // stage's: the built-in one.
-ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                              const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
+ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                              int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
                               const ShaderOverride* shader = nullptr);
 
 // The planes composited from the back (k = planes - 1) to the front (k = 0): one image.
-ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,
-                           const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
+ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                           int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
                            const ShaderOverride* shader = nullptr);
 
 }  // namespace voxref::gpu

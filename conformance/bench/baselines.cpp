@@ -27,17 +27,18 @@ BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset) {
   std::size_t size = 0;
   lzma_ret ret = LZMA_OK;
   r.compress = measureOnce([&] {
-    ret = lzma_easy_buffer_encode(preset, LZMA_CHECK_CRC64, nullptr, reinterpret_cast<const std::uint8_t*>(raw.data()), raw.size(),
-                                  reinterpret_cast<std::uint8_t*>(packed.data()), &size, packed.size());
+    ret = lzma_easy_buffer_encode(preset, LZMA_CHECK_CRC64, nullptr, reinterpret_cast<const std::uint8_t*>(raw.data()),
+                                  raw.size(), reinterpret_cast<std::uint8_t*>(packed.data()), &size, packed.size());
   });
-  if (ret != LZMA_OK) throw std::runtime_error("xz: compression failed (" + std::to_string(static_cast<int>(ret)) + ")");
+  if (ret != LZMA_OK)
+    throw std::runtime_error("xz: compression failed (" + std::to_string(static_cast<int>(ret)) + ")");
   r.bytes = size;
   std::string back(raw.size(), '\0');
   std::size_t inPos = 0, outPos = 0;
   std::uint64_t memlimit = UINT64_MAX;
   r.decompress = measureOnce([&] {
-    ret = lzma_stream_buffer_decode(&memlimit, 0, nullptr, reinterpret_cast<const std::uint8_t*>(packed.data()), &inPos, size,
-                                    reinterpret_cast<std::uint8_t*>(back.data()), &outPos, back.size());
+    ret = lzma_stream_buffer_decode(&memlimit, 0, nullptr, reinterpret_cast<const std::uint8_t*>(packed.data()), &inPos,
+                                    size, reinterpret_cast<std::uint8_t*>(back.data()), &outPos, back.size());
   });
   if (ret != LZMA_OK || outPos != raw.size() || back != raw) throw std::runtime_error("xz: the round trip lost data");
   return r;

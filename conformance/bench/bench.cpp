@@ -1,5 +1,5 @@
-#include "conformance/framework/selection.h"
 #include "conformance/bench/bench.h"
+#include "conformance/framework/selection.h"
 
 #include <sys/resource.h>
 
@@ -18,10 +18,10 @@
 #include "conformance/bench/sparsegrid_bench.h"
 #include "conformance/bench/study.h"
 #include "conformance/bench/timevarying_bench.h"
-#include "conformance/modules/catalog.h"
 #include "conformance/framework/driver_info.h"
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/modules/catalog.h"
 #include "reference/common/parallel.h"
 
 namespace voxref::conf {
@@ -59,7 +59,9 @@ std::string formatSeconds(const Timing& t) {
   return std::string(buf) + (t.estimated ? "*" : "");
 }
 
-std::filesystem::path benchVolumes(const BenchOptions& o) { return o.volumes.empty() ? std::filesystem::path(VOXREF_DEFAULT_SHARED_VOLUMES) : o.volumes; }
+std::filesystem::path benchVolumes(const BenchOptions& o) {
+  return o.volumes.empty() ? std::filesystem::path(VOXREF_DEFAULT_SHARED_VOLUMES) : o.volumes;
+}
 
 Timing measure(const std::function<void()>& fn, int minRuns) {
   using Clock = std::chrono::steady_clock;
@@ -69,8 +71,9 @@ Timing measure(const std::function<void()>& fn, int minRuns) {
     const auto t0 = Clock::now();
     fn();
     runs.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  } while (static_cast<int>(runs.size()) < minRuns ||
-           (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0));
+  } while (
+      static_cast<int>(runs.size()) < minRuns ||
+      (runs.front() < 1.0 && runs.size() < 5 && std::chrono::duration<double>(Clock::now() - start).count() < 2.0));
   return timingOf(std::move(runs));
 }
 
@@ -107,7 +110,8 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   }
   io::ensureDirectory(options.out);
   if (findOnPath("gnuplot").empty())
-    std::cerr << "voxref bench: warning: gnuplot is not on PATH: no accuracy plot can be made (the tables are still written; exit status 1 if a plot is due)\n";
+    std::cerr << "voxref bench: warning: gnuplot is not on PATH: no accuracy plot can be made (the tables are still "
+                 "written; exit status 1 if a plot is due)\n";
   std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
   std::string how;
   const emu::PrecisionProfile* profile = chooseProfile("auto", gl->info(), how);
@@ -123,15 +127,24 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   ::getrusage(RUSAGE_SELF, &usage);
   const double peakBytes = static_cast<double>(usage.ru_maxrss) * 1024.0;
   const std::string header = "Driver: " + gl->info().renderer + " (" + gl->info().version + "), profile " +
-                             (profile ? std::string(profile->name) : "none") + ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
+                             (profile ? std::string(profile->name) : "none") +
+                             ". CPU threads: " + std::to_string(ref::workerCount(options.threads)) +
                              ". Peak resident memory of the whole run: " + bytesText(peakBytes) + "." +
                              (options.quick ? " Quick mode (smoke run: small sizes)." : "");
   std::string md = "# voxref bench\n\n" + header + "\n\n";
-  nlohmann::json json = {{"driver", driverJson(gl->info(), profile, how)}, {"quick", options.quick}, {"threads", ref::workerCount(options.threads)},
-                         {"peak_resident_bytes", peakBytes}, {"tables", nlohmann::json::array()}};
+  nlohmann::json json = {{"driver", driverJson(gl->info(), profile, how)},
+                         {"quick", options.quick},
+                         {"threads", ref::workerCount(options.threads)},
+                         {"peak_resident_bytes", peakBytes},
+                         {"tables", nlohmann::json::array()}};
   for (const BenchTable& t : tables) {
     md += markdown(t);
-    json["tables"].push_back({{"id", t.id}, {"title", t.title}, {"columns", t.columns}, {"rows", t.rows}, {"notes", t.notes}, {"data", t.data}});
+    json["tables"].push_back({{"id", t.id},
+                              {"title", t.title},
+                              {"columns", t.columns},
+                              {"rows", t.rows},
+                              {"notes", t.notes},
+                              {"data", t.data}});
   }
   // Plots of accuracy against time (plots.h), one per study group. Without them the run is not
   // complete: the tables are still written, the markdown and the page say why the plots are
@@ -142,8 +155,11 @@ int runBenchmarks(const BenchOptions& options, std::ostream& out) {
   std::vector<PlottedFigure> plotted;
   std::string plotError;
   if (!plots.empty()) {
-    md += "## Accuracy against time\n\nOne point per precision variant at its median time (the bar spans the fastest and slowest run); "
-          "the Pareto front (the variants no other beats in both time and error) is joined by a line. Timings are of this run on this machine.\n\n";
+    md +=
+        "## Accuracy against time\n\nOne point per precision variant at its median time (the bar spans the fastest and "
+        "slowest run); "
+        "the Pareto front (the variants no other beats in both time and error) is joined by a line. Timings are of "
+        "this run on this machine.\n\n";
     json["plots"] = nlohmann::json::array();
     try {
       for (const AccuracyPlot& p : plots) {

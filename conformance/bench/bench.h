@@ -27,7 +27,7 @@ struct BenchOptions {
 std::filesystem::path benchVolumes(const BenchOptions& options);
 
 struct BenchTable {
-  std::string id;     // "sparsegrid.table1_time"
+  std::string id;  // "sparsegrid.table1_time"
   std::string title;
   std::vector<std::string> columns;
   std::vector<std::vector<std::string>> rows;
@@ -57,9 +57,9 @@ std::string formatNumber(const char* format, double v);
 
 // Runs the benchmarks whose id matches the filter (the study, study.h, is study.*), writes
 // bench.md, results.json and index.html (bench_html.h) into the output folder and, per study
-// group, an accuracy-against-time plot into its plots/ (plots.h), and prints the markdown. Returns the exit status: 0; 1 when a plot is due but could not be made
-// (gnuplot missing or failing: the tables are still written and the markdown says why).
-// Throws UsageError when nothing matches.
+// group, an accuracy-against-time plot into its plots/ (plots.h), and prints the markdown. Returns the exit status: 0;
+// 1 when a plot is due but could not be made (gnuplot missing or failing: the tables are still written and the markdown
+// says why). Throws UsageError when nothing matches.
 int runBenchmarks(const BenchOptions& options, std::ostream& out);
 
 }  // namespace voxref::conf

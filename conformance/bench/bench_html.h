@@ -20,7 +20,8 @@ struct PlottedFigure {
 
 // `header`: one paragraph of plain text (escaped here). `plotsDir`: the plots' folder relative to
 // the page. `plotError`: why the plots are missing, or empty.
-std::string benchHtml(const std::string& header, const std::vector<BenchTable>& tables, const std::vector<PlottedFigure>& plots,
-                      const std::string& plotsDir, const std::string& plotError);
+std::string benchHtml(const std::string& header, const std::vector<BenchTable>& tables,
+                      const std::vector<PlottedFigure>& plots, const std::string& plotsDir,
+                      const std::string& plotError);
 
 }  // namespace voxref::conf

@@ -1,15 +1,15 @@
-#include "conformance/framework/selection.h"
 #include "conformance/bench/iso_bench.h"
+#include "conformance/framework/selection.h"
 
 #include <algorithm>
 #include <chrono>
 #include <memory>
 
 #include "conformance/bench/study.h"
-#include "conformance/modules/catalog.h"
-#include "conformance/modules/iso/surface_accuracy.h"
 #include "conformance/framework/progress.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/modules/iso/iso_session.h"
+#include "conformance/modules/iso/surface_accuracy.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
 #include "reference/common/parallel.h"
@@ -45,7 +45,8 @@ std::vector<IsoScene> benchScenes(const BenchOptions& o) {
     scenes.push_back(engine);
     scenes.push_back(hydrogen);
   }
-  IsoScene bucky = at(o.quick ? "Gaussian buckyball 65^3 (synthetic)" : "Gaussian buckyball 129^3 (synthetic)", o.quick ? ref::Dims3{65, 65, 65} : ref::Dims3{129, 129, 129}, 85.0);
+  IsoScene bucky = at(o.quick ? "Gaussian buckyball 65^3 (synthetic)" : "Gaussian buckyball 129^3 (synthetic)",
+                      o.quick ? ref::Dims3{65, 65, 65} : ref::Dims3{129, 129, 129}, 85.0);
   scenes.push_back(bucky);
   return scenes;
 }
@@ -78,7 +79,8 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
   BenchTable t;
   t.id = "iso.table2";
   t.title = "Isosurfaces, Table 2 on this machine: per frame, with and without occlusion culling";
-  t.columns = {"data set (isovalue)", "culling", "triangles", "leaf diamonds", "occlusion tests", "culled", "false culls", "frame time"};
+  t.columns = {"data set (isovalue)", "culling", "triangles",   "leaf diamonds",
+               "occlusion tests",     "culled",  "false culls", "frame time"};
   for (const IsoScene& s : scenes)
     for (const int mode : {0, 1, 2}) {
       IsoScene run = s;
@@ -87,32 +89,57 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
       IsoRunOptions options;
       options.threads = o.threads;
       const Averages a = average(runIsoFrames(gl, run, options));
-      t.rows.push_back({s.name + " (" + formatNumber("%.0f", s.isovalue) + ")", mode == 0 ? "no" : mode == 1 ? "paper (previous frame)" : "paper + verification", formatNumber("%.0f", a.triangles),
-                        formatNumber("%.0f", a.diamonds), formatNumber("%.0f", a.tests), formatNumber("%.0f", a.culled), std::to_string(a.falseCulls),
+      t.rows.push_back({s.name + " (" + formatNumber("%.0f", s.isovalue) + ")",
+                        mode == 0   ? "no"
+                        : mode == 1 ? "paper (previous frame)"
+                                    : "paper + verification",
+                        formatNumber("%.0f", a.triangles), formatNumber("%.0f", a.diamonds),
+                        formatNumber("%.0f", a.tests), formatNumber("%.0f", a.culled), std::to_string(a.falseCulls),
                         formatNumber("%.3f s", a.frameSeconds)});
-      t.data["rows"].push_back({{"data_set", s.name}, {"isovalue", s.isovalue}, {"culling", mode == 0 ? "no culling" : mode == 1 ? "paper culling" : "paper culling + verification"},
-                                {"frames", s.path.frames}, {"triangles", a.triangles}, {"leaf_diamonds", a.diamonds}, {"occlusion_tests", a.tests},
-                                {"culled", a.culled}, {"false_culls", a.falseCulls},
-                                {"false_culls_per_frame", static_cast<double>(a.falseCulls) / std::max(1, s.path.frames)},
-                                {"frame_seconds", a.frameSeconds}});
+      t.data["rows"].push_back(
+          {{"data_set", s.name},
+           {"isovalue", s.isovalue},
+           {"culling", mode == 0   ? "no culling"
+                       : mode == 1 ? "paper culling"
+                                   : "paper culling + verification"},
+           {"frames", s.path.frames},
+           {"triangles", a.triangles},
+           {"leaf_diamonds", a.diamonds},
+           {"occlusion_tests", a.tests},
+           {"culled", a.culled},
+           {"false_culls", a.falseCulls},
+           {"false_culls_per_frame", static_cast<double>(a.falseCulls) / std::max(1, s.path.frames)},
+           {"frame_seconds", a.frameSeconds}});
     }
-  t.notes = "Averages over the frames of a scripted orbit (" + std::to_string(scenes.front().path.frames) + " frames, " +
-            std::to_string(scenes.front().camera.width) + "x" + std::to_string(scenes.front().camera.height) +
-            " pixels, error threshold " + formatNumber("%.1f", scenes.front().budget.threshold) + " px, at most " +
+  t.notes = "Averages over the frames of a scripted orbit (" + std::to_string(scenes.front().path.frames) +
+            " frames, " + std::to_string(scenes.front().camera.width) + "x" +
+            std::to_string(scenes.front().camera.height) + " pixels, error threshold " +
+            formatNumber("%.1f", scenes.front().budget.threshold) + " px, at most " +
             std::to_string(scenes.front().budget.maxSplits) +
-            " splits per frame). Frame time = occlusion queries + refinement + extraction from the compressed stream + GL drawing (llvmpipe), "
-            "not the Embree ground truth. 'paper + verification' also tests the culled boxes against the frame just extracted and "
-            "refines again where a cull shows (conformance/modules/iso/iso_session.h). False culls: culled diamonds that the Embree item buffer of the same frame shows visible. "
-            "The paper (2004 GPU, 2.6:1 compressed engine) reports triangles and diamonds with and without culling; its absolute times are not comparable.";
+            " splits per frame). Frame time = occlusion queries + refinement + extraction from the compressed stream + "
+            "GL drawing (llvmpipe), "
+            "not the Embree ground truth. 'paper + verification' also tests the culled boxes against the frame just "
+            "extracted and "
+            "refines again where a cull shows (conformance/modules/iso/iso_session.h). False culls: culled diamonds "
+            "that the Embree item buffer of the same frame shows visible. "
+            "The paper (2004 GPU, 2.6:1 compressed engine) reports triangles and diamonds with and without culling; "
+            "its absolute times are not comparable.";
   return t;
 }
 
 BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes) {
   BenchTable t;
   t.id = "iso.extraction";
-  t.title = "Isosurfaces: extraction from the compressed stream against the uncompressed grid, and Embree rays per second";
-  t.columns = {"data set", "triangles", "uncompressed", "compressed (cold page cache)", "pages decoded", "Embree mesh rays/s (1 thread)",
-               "Embree mesh rays/s (all)", "Embree exact trilinear rays/s (all)"};
+  t.title =
+      "Isosurfaces: extraction from the compressed stream against the uncompressed grid, and Embree rays per second";
+  t.columns = {"data set",
+               "triangles",
+               "uncompressed",
+               "compressed (cold page cache)",
+               "pages decoded",
+               "Embree mesh rays/s (1 thread)",
+               "Embree mesh rays/s (all)",
+               "Embree exact trilinear rays/s (all)"};
   for (const IsoScene& s : scenes) {
     const ref::Volume<std::uint16_t> volume = isoSceneVolume(s);
     ref::DenseGridField dense(volume, ref::quantizedGradients(volume));
@@ -136,12 +163,16 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
     const Timing mAll = measure([&] { fx::castMesh(mesh, camera, o.threads); });
     const Timing exact = measure([&] { fx::castTrilinearIsosurface(volume, s.isovalue, camera, o.threads); });
     t.rows.push_back({s.name, std::to_string(mesh.triangleCount()), formatSeconds(un), formatSeconds(co),
-                      std::to_string(pages) + " of " + std::to_string(2 * stream->pageCount()), formatNumber("%.0f", rays / m1.median),
-                      formatNumber("%.0f", rays / mAll.median), formatNumber("%.0f", rays / exact.median)});
+                      std::to_string(pages) + " of " + std::to_string(2 * stream->pageCount()),
+                      formatNumber("%.0f", rays / m1.median), formatNumber("%.0f", rays / mAll.median),
+                      formatNumber("%.0f", rays / exact.median)});
   }
-  t.notes = "The mesh of the first camera of each orbit, refined without a split budget. Extraction reads every vertex of every leaf "
-            "tetrahedron whose diamond's range holds the isovalue; from the compressed stream through LebReader with a 64 MB page cache, "
-            "cold at the start (pages decoded counts both channels). Embree rays: one per pixel; BVH build included.";
+  t.notes =
+      "The mesh of the first camera of each orbit, refined without a split budget. Extraction reads every vertex of "
+      "every leaf "
+      "tetrahedron whose diamond's range holds the isovalue; from the compressed stream through LebReader with a 64 MB "
+      "page cache, "
+      "cold at the start (pages decoded counts both channels). Embree rays: one per pixel; BVH build included.";
   return t;
 }
 
@@ -149,15 +180,21 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
 
 double meshBytes(const ref::IsoMesh& m) {
   return static_cast<double>(m.positions.size() * sizeof(glm::vec3) + m.normals.size() * sizeof(glm::vec3) +
-                             m.indices.size() * sizeof(std::uint32_t) + m.triangleDiamond.size() * sizeof(ref::DiamondId));
+                             m.indices.size() * sizeof(std::uint32_t) +
+                             m.triangleDiamond.size() * sizeof(ref::DiamondId));
 }
 
 StudyGroup thresholdGroup(const BenchOptions& o, const IsoScene& s) {
-  StudyGroup g{"error threshold, " + s.name + " (isovalue " + formatNumber("%.0f", s.isovalue) + ")",
-               "share of pixels whose hit or miss differs from the exact isosurface of the trilinear field",
-               "refinement + extraction from the compressed stream (cold 64 MB page cache) + Embree ray casting of the mesh, "
-               "or Embree ray casting of the exact surface; " + std::to_string(ref::workerCount(o.threads)) + " thread(s)",
-               "resident: compressed stream + mesh, or the uint16 volume (exact)", false, {}, ""};
+  StudyGroup g{
+      "error threshold, " + s.name + " (isovalue " + formatNumber("%.0f", s.isovalue) + ")",
+      "share of pixels whose hit or miss differs from the exact isosurface of the trilinear field",
+      "refinement + extraction from the compressed stream (cold 64 MB page cache) + Embree ray casting of the mesh, "
+      "or Embree ray casting of the exact surface; " +
+          std::to_string(ref::workerCount(o.threads)) + " thread(s)",
+      "resident: compressed stream + mesh, or the uint16 volume (exact)",
+      false,
+      {},
+      ""};
   const ref::Volume<std::uint16_t> volume = isoSceneVolume(s);
   ref::DenseGridField dense(volume, ref::quantizedGradients(volume));
   const ref::DiamondBounds bounds = ref::computeDiamondBounds(dense.grid(), dense.values(), o.threads);
@@ -186,14 +223,21 @@ StudyGroup thresholdGroup(const BenchOptions& o, const IsoScene& s) {
     v.error = e.silhouetteShare();
     v.time = t;
     v.memoryBytes = static_cast<double>(stream->bytes.size()) + meshBytes(surface.mesh);
-    v.figures = {{"threshold_px", threshold}, {"silhouette_pixels", e.silhouettePixels}, {"pixels", e.pixels}, {"mean_depth_error", e.meanDepth},
-                 {"max_depth_error", e.maxDepth}, {"triangles", surface.stats.triangles}, {"split_diamonds", surface.splitDiamonds}};
+    v.figures = {{"threshold_px", threshold},
+                 {"silhouette_pixels", e.silhouettePixels},
+                 {"pixels", e.pixels},
+                 {"mean_depth_error", e.meanDepth},
+                 {"max_depth_error", e.maxDepth},
+                 {"triangles", surface.stats.triangles},
+                 {"split_diamonds", surface.splitDiamonds}};
     g.variants.push_back(v);
   }
   g.variants.push_back(ev);
   g.note = "The first camera of the orbit, " + std::to_string(camera.width) + "x" + std::to_string(camera.height) +
-           " pixels; mean and max eye-depth errors (grid units) over pixels hit in both are in the figures. Threshold 0 refines "
-           "every diamond that holds the isovalue to the finest level: what remains is the error of marching tetrahedra against "
+           " pixels; mean and max eye-depth errors (grid units) over pixels hit in both are in the figures. Threshold "
+           "0 refines "
+           "every diamond that holds the isovalue to the finest level: what remains is the error of marching "
+           "tetrahedra against "
            "the trilinear field. The Embree BVH is not counted in memory.";
   return g;
 }
@@ -213,9 +257,10 @@ BenchTable study(const BenchOptions& o, const std::vector<IsoScene>& scenes) {
     groups.push_back(thresholdGroup(o, s));
   }
   progress.finish();
-  return studyTable("study.iso", "Study, isosurfaces: extracted at an error threshold against the exact surface", groups,
-                    "View-dependent refinement of the LEB diamond mesh (Gregorski et al. 2004, section 4) at each screen-space "
-                    "error threshold, against the exact isosurface of the trilinear interpolant ray cast with Embree.");
+  return studyTable(
+      "study.iso", "Study, isosurfaces: extracted at an error threshold against the exact surface", groups,
+      "View-dependent refinement of the LEB diamond mesh (Gregorski et al. 2004, section 4) at each screen-space "
+      "error threshold, against the exact isosurface of the trilinear interpolant ray cast with Embree.");
 }
 
 }  // namespace

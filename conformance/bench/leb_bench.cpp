@@ -1,5 +1,5 @@
-#include "conformance/framework/selection.h"
 #include "conformance/bench/leb_bench.h"
+#include "conformance/framework/selection.h"
 
 #include <chrono>
 #include <memory>
@@ -8,9 +8,9 @@
 
 #include "conformance/bench/baselines.h"
 #include "conformance/bench/study.h"
-#include "conformance/modules/catalog.h"
-#include "conformance/io/raw_volume.h"
 #include "conformance/framework/progress.h"
+#include "conformance/io/raw_volume.h"
+#include "conformance/modules/catalog.h"
 #include "reference/common/fields.h"
 #include "reference/common/parallel.h"
 #include "reference/leb/gradients.h"
@@ -41,12 +41,14 @@ ref::Volume<std::uint8_t> doubleSlices(const ref::Volume<std::uint8_t>& v) {
     for (int y = 0; y < d[1]; ++y)
       for (int x = 0; x < d[0]; ++x) {
         const int lo = z / 2, hi = std::min(lo + 1, d[2] - 1);
-        out.at(x, y, z) = z % 2 == 0 ? v.at(x, y, lo) : static_cast<std::uint8_t>((v.at(x, y, lo) + v.at(x, y, hi)) / 2);
+        out.at(x, y, z) =
+            z % 2 == 0 ? v.at(x, y, lo) : static_cast<std::uint8_t>((v.at(x, y, lo) + v.at(x, y, hi)) / 2);
       }
   return out;
 }
 
-LebDataset shared(const BenchOptions& o, const std::string& name, const std::string& file, const ref::Dims3& dims, bool doubled = false) {
+LebDataset shared(const BenchOptions& o, const std::string& name, const std::string& file, const ref::Dims3& dims,
+                  bool doubled = false) {
   LebDataset d;
   d.name = name;
   const std::filesystem::path path = benchVolumes(o) / file;
@@ -74,7 +76,8 @@ std::vector<LebDataset> datasets(const BenchOptions& o) {
     return v;
   }
   v.push_back(shared(o, "engine 256x256x128 (as stored)", "engine_256x256x128_uint8.raw.gz", {256, 256, 128}));
-  v.push_back(shared(o, "engine 256^3 (slices doubled, as the paper)", "engine_256x256x128_uint8.raw.gz", {256, 256, 128}, true));
+  v.push_back(shared(o, "engine 256^3 (slices doubled, as the paper)", "engine_256x256x128_uint8.raw.gz",
+                     {256, 256, 128}, true));
   v.back().paper[0] = "2.6";
   v.back().paper[1] = "4.35";
   v.back().paper[2] = "2.22";
@@ -137,9 +140,11 @@ Encoded encodeAndCheck(const LebDataset& d, int pageBits, int threads) {
 BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   BenchTable t;
   t.id = "leb.table1";
-  t.title = "LEB compression, Table 1: lossless ratios of data, gradients and both, with general-purpose baselines on the same bytes";
-  t.columns = {"data set", "codec", "data + gradients", "data", "gradients", "compressed bytes", "encode MB/s", "decode MB/s",
-               "paper: Data+G / Data / Grad"};
+  t.title =
+      "LEB compression, Table 1: lossless ratios of data, gradients and both, with general-purpose baselines on the "
+      "same bytes";
+  t.columns = {"data set",    "codec",       "data + gradients",           "data", "gradients", "compressed bytes",
+               "encode MB/s", "decode MB/s", "paper: Data+G / Data / Grad"};
   Progress progress("voxref bench leb.table1", static_cast<long>(sets.size()));
   long done = 0;
   for (const LebDataset& d : sets) {
@@ -151,16 +156,24 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
     const std::string raw = dataBytes(d.volume, d.bits), grad = gradientBytes(d.volume);
     const double rawAll = static_cast<double>(raw.size() + grad.size());
     const std::string paper = d.paper[0].empty() ? "" : d.paper[0] + " / " + d.paper[1] + " / " + d.paper[2];
-    nlohmann::json row = {{"data_set", d.name}, {"raw_data_bytes", raw.size()}, {"raw_gradient_bytes", grad.size()}, {"codecs", nlohmann::json::array()}};
+    nlohmann::json row = {{"data_set", d.name},
+                          {"raw_data_bytes", raw.size()},
+                          {"raw_gradient_bytes", grad.size()},
+                          {"codecs", nlohmann::json::array()}};
 
     const Encoded e = encodeAndCheck(d, 12, o.threads);
     const ref::LebStats st = ref::lebStats(*e.stream);
-    t.rows.push_back({d.name, "LEB lead-1 (pages of 2^12)", ratio(st.ratio()), ratio(st.channelRatio(ref::LebChannelKind::Data)),
-                      ratio(st.channelRatio(ref::LebChannelKind::Gradients)), std::to_string(st.streamBytes), mbps(rawAll, e.encode.median),
-                      mbps(rawAll, e.decode.median), paper});
-    row["codecs"].push_back({{"codec", "leb"}, {"bytes", st.streamBytes}, {"data_ratio", st.channelRatio(ref::LebChannelKind::Data)},
-                             {"gradient_ratio", st.channelRatio(ref::LebChannelKind::Gradients)}, {"ratio", st.ratio()},
-                             {"encode", toJson(e.encode)}, {"decode", toJson(e.decode)}});
+    t.rows.push_back({d.name, "LEB lead-1 (pages of 2^12)", ratio(st.ratio()),
+                      ratio(st.channelRatio(ref::LebChannelKind::Data)),
+                      ratio(st.channelRatio(ref::LebChannelKind::Gradients)), std::to_string(st.streamBytes),
+                      mbps(rawAll, e.encode.median), mbps(rawAll, e.decode.median), paper});
+    row["codecs"].push_back({{"codec", "leb"},
+                             {"bytes", st.streamBytes},
+                             {"data_ratio", st.channelRatio(ref::LebChannelKind::Data)},
+                             {"gradient_ratio", st.channelRatio(ref::LebChannelKind::Gradients)},
+                             {"ratio", st.ratio()},
+                             {"encode", toJson(e.encode)},
+                             {"decode", toJson(e.decode)}});
 
     // The same prediction, coded by zstd instead of lead-1 Huffman: separates predictor and coder.
     std::string dDeltas, gDeltas;
@@ -171,9 +184,11 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
     {
       const BaselineResult zd = zstdBaseline(dDeltas, 19), zg = zstdBaseline(gDeltas, 19);
       const double bytes = static_cast<double>(zd.bytes + zg.bytes);
-      t.rows.push_back({d.name, "LEB prediction + zstd -19", ratio(rawAll / bytes), ratio(zd.ratio(raw.size())), ratio(zg.ratio(grad.size())),
-                        std::to_string(zd.bytes + zg.bytes), mbps(rawAll, predict.median + zd.compress.median + zg.compress.median), "-", ""});
-      row["codecs"].push_back({{"codec", "leb prediction + zstd -19"}, {"bytes", zd.bytes + zg.bytes}, {"predict", toJson(predict)}});
+      t.rows.push_back({d.name, "LEB prediction + zstd -19", ratio(rawAll / bytes), ratio(zd.ratio(raw.size())),
+                        ratio(zg.ratio(grad.size())), std::to_string(zd.bytes + zg.bytes),
+                        mbps(rawAll, predict.median + zd.compress.median + zg.compress.median), "-", ""});
+      row["codecs"].push_back(
+          {{"codec", "leb prediction + zstd -19"}, {"bytes", zd.bytes + zg.bytes}, {"predict", toJson(predict)}});
     }
     for (const std::string codec : {"zstd -3", "zstd -19", "xz -6"}) {
       const bool xz = codec == "xz -6";
@@ -181,22 +196,34 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
       const BaselineResult bd = xz ? xzBaseline(raw, 6) : zstdBaseline(raw, level);
       const BaselineResult bg = xz ? xzBaseline(grad, 6) : zstdBaseline(grad, level);
       const double bytes = static_cast<double>(bd.bytes + bg.bytes);
-      t.rows.push_back({d.name, codec, ratio(rawAll / bytes), ratio(bd.ratio(raw.size())), ratio(bg.ratio(grad.size())), std::to_string(bd.bytes + bg.bytes),
-                        mbps(rawAll, bd.compress.median + bg.compress.median), mbps(rawAll, bd.decompress.median + bg.decompress.median), ""});
-      row["codecs"].push_back({{"codec", codec}, {"bytes", bd.bytes + bg.bytes}, {"data_bytes", bd.bytes}, {"gradient_bytes", bg.bytes},
-                               {"encode", toJson(bd.compress)}, {"decode", toJson(bd.decompress)}});
+      t.rows.push_back({d.name, codec, ratio(rawAll / bytes), ratio(bd.ratio(raw.size())), ratio(bg.ratio(grad.size())),
+                        std::to_string(bd.bytes + bg.bytes), mbps(rawAll, bd.compress.median + bg.compress.median),
+                        mbps(rawAll, bd.decompress.median + bg.decompress.median), ""});
+      row["codecs"].push_back({{"codec", codec},
+                               {"bytes", bd.bytes + bg.bytes},
+                               {"data_bytes", bd.bytes},
+                               {"gradient_bytes", bg.bytes},
+                               {"encode", toJson(bd.compress)},
+                               {"decode", toJson(bd.decompress)}});
     }
     t.data["rows"].push_back(row);
   }
   progress.finish();
   t.notes =
-      "Ratios are raw bytes over compressed bytes; raw = the volume's samples (1 or 2 bytes) and 3 bytes of quantized gradient per sample "
-      "(reference/leb/gradients.h: central differences, normalized, snorm8; the paper smoothed its gradients by diffusion first, voxref "
-      "does not, so its gradients are noisier). LEB counts the whole stream: header, code tables, page table and per-page CRC-32, payload; "
-      "padding to (2^k+1)^3 costs no payload and is not in the raw bytes. Data and gradients are coded as two channels with a code each "
-      "(the paper used one table for the four values). The baselines compress the data bytes and the gradient bytes separately (x fastest), "
-      "'LEB prediction + zstd -19' hands the same deltas the lead-1 coder codes to zstd. zstd and xz are not randomly accessible. "
-      "Decode MB/s: output bytes per second of the whole volume (data and gradients). Every codec's round trip is checked in the run.";
+      "Ratios are raw bytes over compressed bytes; raw = the volume's samples (1 or 2 bytes) and 3 bytes of quantized "
+      "gradient per sample "
+      "(reference/leb/gradients.h: central differences, normalized, snorm8; the paper smoothed its gradients by "
+      "diffusion first, voxref "
+      "does not, so its gradients are noisier). LEB counts the whole stream: header, code tables, page table and "
+      "per-page CRC-32, payload; "
+      "padding to (2^k+1)^3 costs no payload and is not in the raw bytes. Data and gradients are coded as two channels "
+      "with a code each "
+      "(the paper used one table for the four values). The baselines compress the data bytes and the gradient bytes "
+      "separately (x fastest), "
+      "'LEB prediction + zstd -19' hands the same deltas the lead-1 coder codes to zstd. zstd and xz are not randomly "
+      "accessible. "
+      "Decode MB/s: output bytes per second of the whole volume (data and gradients). Every codec's round trip is "
+      "checked in the run.";
   return t;
 }
 
@@ -228,7 +255,8 @@ std::vector<PageSet> pageSets(const ref::LebStream& s) {
   for (const ref::LebChannel& c : s.channels) {
     PageSet p{&c, {}};
     for (std::uint64_t i = 0; i < s.pageCount(); ++i)
-      p.values.push_back(ref::insidePointsOfPage(order, s.dims, s.pageBits, i) * static_cast<std::uint64_t>(c.components));
+      p.values.push_back(ref::insidePointsOfPage(order, s.dims, s.pageBits, i) *
+                         static_cast<std::uint64_t>(c.components));
     sets.push_back(std::move(p));
   }
   return sets;
@@ -254,7 +282,9 @@ RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int th
       std::mt19937 rng(static_cast<unsigned>(1000 + worker));
       std::uint64_t sink = 0;
       const auto start = std::chrono::steady_clock::now();
-      auto coord = [&](int axis) { return static_cast<int>(rng() % static_cast<unsigned>(s->dims[static_cast<std::size_t>(axis)])); };
+      auto coord = [&](int axis) {
+        return static_cast<int>(rng() % static_cast<unsigned>(s->dims[static_cast<std::size_t>(axis)]));
+      };
       ref::GridPoint brick{0, 0, 0};
       int i = 0;
       for (; i < points && (i % 512 != 0 || std::chrono::steady_clock::now() - start < std::chrono::seconds(2)); ++i) {
@@ -293,7 +323,8 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   BenchTable t;
   t.id = "leb.decode_speed";
   const LebDataset* d = firstAvailable(sets);
-  t.title = "LEB decode speed: pages, whole volumes and random access" + (d ? " (" + d->name + ", pages of 2^12)" : std::string());
+  t.title = "LEB decode speed: pages, whole volumes and random access" +
+            (d ? " (" + d->name + ", pages of 2^12)" : std::string());
   t.columns = {"what", "1 thread", "2 threads", "paper (2 GHz Pentium 4, 2004)"};
   if (!d) {
     t.notes = "not run: no data set available";
@@ -304,32 +335,48 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   double out = 0.0;
   const Timing p1 = measure([&] { out = decodePagesOnly(*e.stream, ps, 1); });
   const Timing p2 = measure([&] { out = decodePagesOnly(*e.stream, ps, 2); });
-  t.rows.push_back({"page decompression (lead-1 decoding only), MB/s of deltas", mbps(out, p1.median), mbps(out, p2.median), "50-70 (10-110)"});
+  t.rows.push_back({"page decompression (lead-1 decoding only), MB/s of deltas", mbps(out, p1.median),
+                    mbps(out, p2.median), "50-70 (10-110)"});
   const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
   const Timing w1 = measure([&] { (void)ref::decodeLeb(*e.stream, 1); });
   const Timing w2 = measure([&] { (void)ref::decodeLeb(*e.stream, 2); });
-  t.rows.push_back({"whole volume (decompress and reconstruct), MB/s of data and gradients", mbps(volumeBytes, w1.median), mbps(volumeBytes, w2.median), ""});
+  t.rows.push_back({"whole volume (decompress and reconstruct), MB/s of data and gradients",
+                    mbps(volumeBytes, w1.median), mbps(volumeBytes, w2.median), ""});
   const int points = o.quick ? 5000 : 1000000;
   for (const AccessPattern pattern : {AccessPattern::Bricks, AccessPattern::Uniform})
     for (std::size_t budget : {std::size_t{64} << 20, std::size_t{1} << 20}) {
-      const RandomAccess r1 = randomAccess(e.stream, 1, budget, points, pattern), r2 = randomAccess(e.stream, 2, budget, points, pattern);
+      const RandomAccess r1 = randomAccess(e.stream, 1, budget, points, pattern),
+                         r2 = randomAccess(e.stream, 2, budget, points, pattern);
       const bool bricks = pattern == AccessPattern::Bricks;
       const std::string what = std::string(bricks ? "points of random 8^3 bricks" : "uniformly random points") +
                                " (sample and gradient), points/s, cache " + std::to_string(budget >> 20) + " MB";
-      t.rows.push_back({what, formatNumber("%.0f", r1.pointsPerSecond) + formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
-                        formatNumber("%.0f", r2.pointsPerSecond), bricks && budget > (1u << 20) ? "362K-3.32M points/s (during extraction)" : ""});
-      t.data["random_access"].push_back({{"pattern", bricks ? "bricks" : "uniform"}, {"budget_bytes", budget}, {"points_per_second_1", r1.pointsPerSecond},
-                                         {"points_per_second_2", r2.pointsPerSecond}, {"page_decodes_per_point", r1.pageMissesPerPoint}});
+      t.rows.push_back({what,
+                        formatNumber("%.0f", r1.pointsPerSecond) +
+                            formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
+                        formatNumber("%.0f", r2.pointsPerSecond),
+                        bricks && budget > (1u << 20) ? "362K-3.32M points/s (during extraction)" : ""});
+      t.data["random_access"].push_back({{"pattern", bricks ? "bricks" : "uniform"},
+                                         {"budget_bytes", budget},
+                                         {"points_per_second_1", r1.pointsPerSecond},
+                                         {"points_per_second_2", r2.pointsPerSecond},
+                                         {"page_decodes_per_point", r1.pageMissesPerPoint}});
     }
   t.data["pages"] = {{"output_bytes", out}, {"one_thread", toJson(p1)}, {"two_threads", toJson(p2)}};
   t.data["whole"] = {{"output_bytes", volumeBytes}, {"one_thread", toJson(w1)}, {"two_threads", toJson(w2)}};
-  t.notes = "Page decompression decodes every page of both channels with the lead-1 decoder (the deltas, 1 byte each for 8-bit data and "
-            "gradient components), as the paper measured it. The whole-volume decode adds the prediction walk over the (2^k+1)^3 grid. "
-            "Random access: each thread its own reader and page cache (reference/leb/leb_reader.h, int16 deltas per cached position), "
-            "each point's split-edge ancestors reconstructed recursively; runs stop after about two seconds. Bricks: every point of "
-            "random 8^3 bricks, the coherent access of a local refinement; uniform points are the worst case, where nearly every point "
-            "decodes a page of 4096 points. The paper's reconstruction rates were measured during isosurface extraction (coherent, "
-            "with disk loads), so they compare with the bricks row in order of magnitude only.";
+  t.notes =
+      "Page decompression decodes every page of both channels with the lead-1 decoder (the deltas, 1 byte each for "
+      "8-bit data and "
+      "gradient components), as the paper measured it. The whole-volume decode adds the prediction walk over the "
+      "(2^k+1)^3 grid. "
+      "Random access: each thread its own reader and page cache (reference/leb/leb_reader.h, int16 deltas per cached "
+      "position), "
+      "each point's split-edge ancestors reconstructed recursively; runs stop after about two seconds. Bricks: every "
+      "point of "
+      "random 8^3 bricks, the coherent access of a local refinement; uniform points are the worst case, where nearly "
+      "every point "
+      "decodes a page of 4096 points. The paper's reconstruction rates were measured during isosurface extraction "
+      "(coherent, "
+      "with disk loads), so they compare with the bricks row in order of magnitude only.";
   return t;
 }
 
@@ -340,8 +387,8 @@ BenchTable pageSize(const BenchOptions& o, const std::vector<LebDataset>& sets) 
   t.id = "leb.page_size";
   const LebDataset* d = firstAvailable(sets);
   t.title = "LEB page size: what random access costs" + (d ? " (" + d->name + ")" : std::string());
-  t.columns = {"page points", "ratio (data + gradients)", "tables and page index", "page decode MB/s", "whole decode MB/s",
-               "random points/s (cache 16 MB)", "page decodes per point"};
+  t.columns = {"page points",       "ratio (data + gradients)",      "tables and page index", "page decode MB/s",
+               "whole decode MB/s", "random points/s (cache 16 MB)", "page decodes per point"};
   if (!d) {
     t.notes = "not run: no data set available";
     return t;
@@ -360,16 +407,25 @@ BenchTable pageSize(const BenchOptions& o, const std::vector<LebDataset>& sets) 
     double out = 0.0;
     const Timing p1 = measure([&] { out = decodePagesOnly(*e.stream, ps, 1); });
     const RandomAccess r = randomAccess(e.stream, 1, std::size_t{16} << 20, o.quick ? 2000 : 100000);
-    t.rows.push_back({"2^" + std::to_string(pb), ratio(st.ratio()), formatNumber("%.2f %%", 100.0 * static_cast<double>(tables) / static_cast<double>(st.streamBytes)),
-                      mbps(out, p1.median), mbps(volumeBytes, e.decode.median), formatNumber("%.0f", r.pointsPerSecond),
-                      formatNumber("%.3f", r.pageMissesPerPoint)});
-    t.data["rows"].push_back({{"page_bits", pb}, {"ratio", st.ratio()}, {"table_bytes", tables}, {"stream_bytes", st.streamBytes},
-                              {"page_decode", toJson(p1)}, {"whole_decode", toJson(e.decode)}, {"points_per_second", r.pointsPerSecond}});
+    t.rows.push_back(
+        {"2^" + std::to_string(pb), ratio(st.ratio()),
+         formatNumber("%.2f %%", 100.0 * static_cast<double>(tables) / static_cast<double>(st.streamBytes)),
+         mbps(out, p1.median), mbps(volumeBytes, e.decode.median), formatNumber("%.0f", r.pointsPerSecond),
+         formatNumber("%.3f", r.pageMissesPerPoint)});
+    t.data["rows"].push_back({{"page_bits", pb},
+                              {"ratio", st.ratio()},
+                              {"table_bytes", tables},
+                              {"stream_bytes", st.streamBytes},
+                              {"page_decode", toJson(p1)},
+                              {"whole_decode", toJson(e.decode)},
+                              {"points_per_second", r.pointsPerSecond}});
   }
   progress.finish();
-  t.notes = "Smaller pages cost ratio twice: each page restarts its context, and each adds 8 bytes to the page table (length and CRC-32). "
-            "Larger pages make every random point decode more deltas it does not need. Whole decode on " +
-            std::to_string(ref::workerCount(o.threads)) + " thread(s); page decode and random points on 1.";
+  t.notes =
+      "Smaller pages cost ratio twice: each page restarts its context, and each adds 8 bytes to the page table (length "
+      "and CRC-32). "
+      "Larger pages make every random point decode more deltas it does not need. Whole decode on " +
+      std::to_string(ref::workerCount(o.threads)) + " thread(s); page decode and random points on 1.";
   return t;
 }
 
@@ -377,9 +433,13 @@ BenchTable pageSize(const BenchOptions& o, const std::vector<LebDataset>& sets) 
 
 BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   const LebDataset* d = firstAvailable(sets);
-  StudyGroup pages{"page size (points per page)", "none: every variant decodes bit for bit (checked by a full decode)",
+  StudyGroup pages{"page size (points per page)",
+                   "none: every variant decodes bit for bit (checked by a full decode)",
                    "reconstructing one point's sample and gradient, random 8^3 bricks, 16 MB page cache, 1 thread",
-                   "the compressed stream (data + gradients)", true, {}, ""};
+                   "the compressed stream (data + gradients)",
+                   true,
+                   {},
+                   ""};
   if (!d) return studyTable("study.leb", "Study, LEB compression: not run", {}, "not run: no data set available");
   const std::vector<int> bits = o.quick ? std::vector<int>{6, 8, 10} : std::vector<int>{8, 10, 12, 14, 16};
   const int points = o.quick ? 4000 : 100000;
@@ -405,9 +465,10 @@ BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   }
   progress.finish();
   pages.note = "Lossless: the trade-off is size against access time, so the plot shows bytes, not error.";
-  return studyTable("study.leb", "Study, LEB compression (" + d->name + ")", {pages},
-                    "Smaller pages restart the coder's context more often and add page-table entries; larger pages make a random "
-                    "point decode more deltas it does not need.");
+  return studyTable(
+      "study.leb", "Study, LEB compression (" + d->name + ")", {pages},
+      "Smaller pages restart the coder's context more often and add page-table entries; larger pages make a random "
+      "point decode more deltas it does not need.");
 }
 
 }  // namespace

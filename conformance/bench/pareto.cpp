@@ -27,7 +27,8 @@ std::vector<std::size_t> paretoFront(std::span<const TradeoffPoint> points) {
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (!valid(points[i])) continue;
     bool dominated = false;
-    for (std::size_t j = 0; j < points.size() && !dominated; ++j) dominated = j != i && valid(points[j]) && dominates(points[j], points[i]);
+    for (std::size_t j = 0; j < points.size() && !dominated; ++j)
+      dominated = j != i && valid(points[j]) && dominates(points[j], points[i]);
     if (!dominated) front.push_back(i);
   }
   std::sort(front.begin(), front.end(), [&](std::size_t a, std::size_t b) {
@@ -45,7 +46,8 @@ std::string frontCostSummary(std::span<const TradeoffPoint> points, std::span<co
   const std::size_t fast = front.front(), accurate = front.back();
   const TradeoffPoint& f = points[fast];
   const TradeoffPoint& a = points[accurate];
-  if (f.cost == a.cost && f.error == a.error) return labels[fast] + " is both the fastest and the " + (q == "error" ? "most accurate" : "smallest");
+  if (f.cost == a.cost && f.error == a.error)
+    return labels[fast] + " is both the fastest and the " + (q == "error" ? "most accurate" : "smallest");
   std::string s = "from " + labels[fast] + " to " + labels[accurate] + ": ";
   s += f.cost > 0.0 ? number("%.3g", a.cost / f.cost) + "x the time" : "from no time to " + number("%.3g s", a.cost);
   if (a.error == 0.0)

@@ -38,7 +38,8 @@ std::string number(double v) {
 }
 
 // Runs gnuplot in `dir` with `args`; throws PlotError with its error output when it fails.
-void runGnuplot(const std::filesystem::path& gnuplot, const std::filesystem::path& dir, const std::vector<std::string>& args) {
+void runGnuplot(const std::filesystem::path& gnuplot, const std::filesystem::path& dir,
+                const std::vector<std::string>& args) {
   const std::filesystem::path errFile = dir / ("gnuplot.stderr.tmp" + std::to_string(::getpid()));
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
@@ -66,7 +67,8 @@ void runGnuplot(const std::filesystem::path& gnuplot, const std::filesystem::pat
   std::error_code ec;
   std::filesystem::remove(errFile, ec);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    throw PlotError(gnuplot.string() + " failed (" + (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : "killed by a signal") +
+    throw PlotError(gnuplot.string() + " failed (" +
+                    (WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status)) : "killed by a signal") +
                     ") on " + (dir / args.back()).string() + (err.empty() ? "" : ": " + err));
 }
 
@@ -86,16 +88,19 @@ std::string labels(const AccuracyPlot& plot, const Drawn& drawn, bool logY) {
     lo = std::min(lo, drawn(p));
     hi = std::max(hi, drawn(p));
   }
-  auto y = [&](const TradeoffPoint& p) { return logY ? std::log10(drawn(p)) : (hi > lo ? 4.0 * (drawn(p) - lo) / (hi - lo) : 0.0); };
+  auto y = [&](const TradeoffPoint& p) {
+    return logY ? std::log10(drawn(p)) : (hi > lo ? 4.0 * (drawn(p) - lo) / (hi - lo) : 0.0);
+  };
   std::ostringstream out;
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
     int stacked = 0;
     for (std::size_t j = 0; j < i; ++j)
       stacked += std::fabs(y(plot.points[i]) - y(plot.points[j])) < 0.25 &&
                  std::fabs(std::log10(plot.points[i].cost) - std::log10(plot.points[j].cost)) < 0.5;
-    out << "set label " << i + 1 << " " << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << " at "
-        << number(plot.points[i].cost) << "," << number(drawn(plot.points[i])) << " left offset char 1," << shortNumber(0.7 + 1.2 * stacked)
-        << " front\n";
+    out << "set label " << i + 1 << " "
+        << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << " at "
+        << number(plot.points[i].cost) << "," << number(drawn(plot.points[i])) << " left offset char 1,"
+        << shortNumber(0.7 + 1.2 * stacked) << " front\n";
   }
   return out.str();
 }
@@ -114,7 +119,8 @@ std::filesystem::path findOnPath(const std::string& name) {
 
 PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::path& dir) {
   const std::filesystem::path gnuplot = findOnPath("gnuplot");
-  if (gnuplot.empty()) throw PlotError("gnuplot is not on PATH (Debian: apt-get install gnuplot-nox; cmake/setup-debian.sh installs it)");
+  if (gnuplot.empty())
+    throw PlotError("gnuplot is not on PATH (Debian: apt-get install gnuplot-nox; cmake/setup-debian.sh installs it)");
   io::ensureDirectory(dir);
   PlotFiles f;
   f.png = dir / (plot.id + ".png");
@@ -130,23 +136,30 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
   for (const TradeoffPoint& p : plot.points)
     if (p.error > 0.0 && (minPositive == 0.0 || p.error < minPositive)) minPositive = p.error;
   const bool logY = minPositive > 0.0;
-  const bool anyZero = std::any_of(plot.points.begin(), plot.points.end(), [](const TradeoffPoint& p) { return p.error == 0.0; });
+  const bool anyZero =
+      std::any_of(plot.points.begin(), plot.points.end(), [](const TradeoffPoint& p) { return p.error == 0.0; });
   const double zeroAt = logY ? minPositive / 10.0 : 0.0;
   auto drawn = [&](const TradeoffPoint& p) { return p.error > 0.0 ? p.error : zeroAt; };
 
   std::ostringstream dat;
-  dat << "# " << plot.title << "\n# columns: seconds (median), error as drawn, error, on the Pareto front (1/0), min seconds, max seconds, variant\n"
+  dat << "# " << plot.title
+      << "\n# columns: seconds (median), error as drawn, error, on the Pareto front (1/0), min seconds, max seconds, "
+         "variant\n"
       << "# index 0: every variant; index 1: the Pareto front in order of time\n";
   for (std::size_t i = 0; i < plot.points.size(); ++i) {
     const bool onFront = std::find(f.front.begin(), f.front.end(), i) != f.front.end();
-    const auto spread = i < plot.costSpread.size() ? plot.costSpread[i] : std::pair<double, double>(plot.points[i].cost, plot.points[i].cost);
-    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error) << " " << onFront << " "
-        << number(spread.first) << " " << number(spread.second) << " " << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
+    const auto spread = i < plot.costSpread.size()
+                            ? plot.costSpread[i]
+                            : std::pair<double, double>(plot.points[i].cost, plot.points[i].cost);
+    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error)
+        << " " << onFront << " " << number(spread.first) << " " << number(spread.second) << " "
+        << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
   }
   dat << "\n\n";
   for (std::size_t i : f.front)
-    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error) << " 1 "
-        << number(plot.points[i].cost) << " " << number(plot.points[i].cost) << " " << quoted(plot.labels[i]) << "\n";
+    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error)
+        << " 1 " << number(plot.points[i].cost) << " " << number(plot.points[i].cost) << " " << quoted(plot.labels[i])
+        << "\n";
   if (f.front.empty()) dat << "# (no points)\n";
 
   const std::string data = plot.id + ".dat";
@@ -156,13 +169,15 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
      << "if (!exists(\"svgout\")) svgout = " << quoted(plot.id + ".svg") << "\n"
      << "set title " << quoted(plot.title) << "\n"
      << "set xlabel " << quoted(plot.xLabel) << "\n"
-     << "set ylabel " << quoted(plot.yLabel + (anyZero && logY ? " (0 drawn at " + shortNumber(zeroAt) + ")" : "")) << "\n"
-     << "set logscale x\n" << (logY ? "set logscale y\nset format y \"%.0e\"\n" : "set yrange [*:*]\n")
+     << "set ylabel " << quoted(plot.yLabel + (anyZero && logY ? " (0 drawn at " + shortNumber(zeroAt) + ")" : ""))
+     << "\n"
+     << "set logscale x\n"
+     << (logY ? "set logscale y\nset format y \"%.0e\"\n" : "set yrange [*:*]\n")
      << "set grid\nset key top right box opaque\nset offsets graph 0.08, graph 0.45, graph 0.15, graph 0.1\n"
      << "set style line 1 pt 7 ps 1.4 lc rgb \"#1f77b4\"\nset style line 2 pt 6 ps 2.4 lw 2 lc rgb \"#d62728\"\n"
-     << labels(plot, drawn, logY)
-     << "set terminal pngcairo size 1000,650 noenhanced font \",10\"\nset output pngout\n"
-     << "plot " << quoted(data) << " index 0 using 1:2:5:6 with xerrorbars ls 1 title \"variant (bar: min - max time)\", \\\n"
+     << labels(plot, drawn, logY) << "set terminal pngcairo size 1000,650 noenhanced font \",10\"\nset output pngout\n"
+     << "plot " << quoted(data)
+     << " index 0 using 1:2:5:6 with xerrorbars ls 1 title \"variant (bar: min - max time)\", \\\n"
      << "     " << quoted(data) << " index 1 using 1:2 with linespoints ls 2 title \"Pareto front\"\n"
      << "set terminal svg size 1000,650 noenhanced font \",10\"\nset output svgout\nreplot\nunset output\n";
 
@@ -181,13 +196,15 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
 
 std::string costSentence(const AccuracyPlot& plot, const PlotFiles& files) {
   if (files.costSummary.empty()) return {};
-  return std::string(plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") + files.costSummary + ".";
+  return std::string(plot.quantity == "error" ? "What each extra bit costs: " : "What each byte saved costs: ") +
+         files.costSummary + ".";
 }
 
 std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const std::string& rel) {
-  std::string md = "### " + plot.title + "\n\n![" + plot.title + "](" + rel + "/" + files.png.filename().string() + ")\n\n[SVG](" + rel + "/" +
-                   files.svg.filename().string() + "), [gnuplot script](" + rel + "/" + files.script.filename().string() + "), [data](" + rel +
-                   "/" + files.data.filename().string() + ")\n\n";
+  std::string md = "### " + plot.title + "\n\n![" + plot.title + "](" + rel + "/" + files.png.filename().string() +
+                   ")\n\n[SVG](" + rel + "/" + files.svg.filename().string() + "), [gnuplot script](" + rel + "/" +
+                   files.script.filename().string() + "), [data](" + rel + "/" + files.data.filename().string() +
+                   ")\n\n";
   std::vector<std::string> front;
   for (std::size_t i : files.front) front.push_back(plot.labels[i]);
   if (!files.costSummary.empty())
@@ -201,12 +218,21 @@ std::string plotMarkdown(const AccuracyPlot& plot, const PlotFiles& files, const
 nlohmann::json plotJson(const AccuracyPlot& plot, const PlotFiles& files, const std::string& rel) {
   nlohmann::json points = nlohmann::json::array();
   for (std::size_t i = 0; i < plot.points.size(); ++i)
-    points.push_back({{"variant", plot.labels[i]}, {"seconds", plot.points[i].cost}, {"error", plot.points[i].error},
+    points.push_back({{"variant", plot.labels[i]},
+                      {"seconds", plot.points[i].cost},
+                      {"error", plot.points[i].error},
                       {"pareto", std::find(files.front.begin(), files.front.end(), i) != files.front.end()}});
-  return {{"id", plot.id}, {"title", plot.title}, {"x", plot.xLabel}, {"y", plot.yLabel}, {"points", points},
-          {"png", rel + "/" + files.png.filename().string()}, {"svg", rel + "/" + files.svg.filename().string()},
-          {"script", rel + "/" + files.script.filename().string()}, {"data", rel + "/" + files.data.filename().string()},
-          {"cost_summary", files.costSummary}, {"note", plot.note}};
+  return {{"id", plot.id},
+          {"title", plot.title},
+          {"x", plot.xLabel},
+          {"y", plot.yLabel},
+          {"points", points},
+          {"png", rel + "/" + files.png.filename().string()},
+          {"svg", rel + "/" + files.svg.filename().string()},
+          {"script", rel + "/" + files.script.filename().string()},
+          {"data", rel + "/" + files.data.filename().string()},
+          {"cost_summary", files.costSummary},
+          {"note", plot.note}};
 }
 
 }  // namespace voxref::conf

@@ -27,15 +27,15 @@ class PlotError : public std::runtime_error {
 struct AccuracyPlot {
   std::string id;  // file stem: "sparsegrid.accuracy"
   std::string title;
-  std::string xLabel;  // what the cost is: "GL seconds per frame (median)"
-  std::string yLabel;  // what the error is: "RMSE against the double reference"
-  std::string quantity = "error";  // what the vertical axis holds: "error" or "memory" (pareto.h)
-  std::vector<std::string> labels;     // one per point: the variant
-  std::vector<TradeoffPoint> points;   // cost in seconds (> 0), error >= 0
+  std::string xLabel;                 // what the cost is: "GL seconds per frame (median)"
+  std::string yLabel;                 // what the error is: "RMSE against the double reference"
+  std::string quantity = "error";     // what the vertical axis holds: "error" or "memory" (pareto.h)
+  std::vector<std::string> labels;    // one per point: the variant
+  std::vector<TradeoffPoint> points;  // cost in seconds (> 0), error >= 0
   // Per point, the min and max cost of its repeated runs (drawn as a horizontal bar); empty when
   // there is no spread to show.
   std::vector<std::pair<double, double>> costSpread;
-  std::string note;                    // variants left out and why; empty when none
+  std::string note;  // variants left out and why; empty when none
 };
 
 // The path of the program `name` on PATH, or empty when there is none.

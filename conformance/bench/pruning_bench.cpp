@@ -1,5 +1,5 @@
-#include "conformance/framework/selection.h"
 #include "conformance/bench/pruning_bench.h"
+#include "conformance/framework/selection.h"
 
 #include <cstring>
 #include <set>
@@ -26,17 +26,26 @@ std::string joined(const std::vector<emu::Effect>& effects) {
 void addRow(BenchTable& t, const std::string& id, const std::string& state, const std::string& pruned, const Timing& p,
             const Timing& f, bool identical) {
   const double ratio = p.median > 0 ? f.median / p.median : 0.0;
-  t.rows.push_back({id, state, pruned, formatSeconds(p), formatSeconds(f), formatNumber("%.2f", ratio), identical ? "yes" : "**NO**"});
-  t.data["rows"].push_back({{"case", id}, {"state", state}, {"pruned_stages", pruned}, {"pruned", toJson(p)}, {"forced", toJson(f)},
-                            {"forced_over_pruned", ratio}, {"identical", identical}});
+  t.rows.push_back({id, state, pruned, formatSeconds(p), formatSeconds(f), formatNumber("%.2f", ratio),
+                    identical ? "yes" : "**NO**"});
+  t.data["rows"].push_back({{"case", id},
+                            {"state", state},
+                            {"pruned_stages", pruned},
+                            {"pruned", toJson(p)},
+                            {"forced", toJson(f)},
+                            {"forced_over_pruned", ratio},
+                            {"identical", identical}});
 }
 
 // The header both tables share: `what` names the system.
 BenchTable pruningTable(const std::string& id, const std::string& what, const emu::PrecisionProfile& profile) {
   BenchTable t;
   t.id = id;
-  t.title = "Effect pruning, " + what + ": emulation with only the scene's effects vs every effect forced on (profile " + std::string(profile.name) + ")";
-  t.columns = {"case (built-in scene)", "state", "stages pruned", "pruned", "forced", "forced / pruned", "identical bits"};
+  t.title = "Effect pruning, " + what +
+            ": emulation with only the scene's effects vs every effect forced on (profile " +
+            std::string(profile.name) + ")";
+  t.columns = {"case (built-in scene)", "state",         "stages pruned", "pruned", "forced",
+               "forced / pruned",       "identical bits"};
   return t;
 }
 
@@ -52,7 +61,9 @@ BenchTable combinationTable(const BenchOptions& o, const emu::PrecisionProfile& 
     try {
       SparseGridScene scene = parseSparseGridScene(*c.scene);
       if (scene.data.isVolume()) continue;
-      const int rank = scene.sampler.filter == ref::Filter::Nearest ? 0 : ref::unormBits(scene.framebuffer) == 0 ? 1 : 2;
+      const int rank = scene.sampler.filter == ref::Filter::Nearest ? 0
+                       : ref::unormBits(scene.framebuffer) == 0     ? 1
+                                                                    : 2;
       ordered[rank].emplace_back(c.id, std::move(scene));
     } catch (const std::exception&) {
     }
@@ -70,34 +81,42 @@ BenchTable combinationTable(const BenchOptions& o, const emu::PrecisionProfile& 
     const auto& [caseId, scene] = candidates[k];
     if (seen.size() >= cap) break;
     if (taken[rankOf[k]] >= perRank[rankOf[k]]) continue;
-    const struct {
-      std::string id;
-    } c{caseId};
-    if (!seen.insert({static_cast<int>(scene.textures.format), static_cast<int>(scene.sampler.filter), static_cast<int>(scene.sampler.wrap),
-                      static_cast<int>(scene.framebuffer), scene.flushEachPass})
+    const struct { std::string id; } c{caseId};
+    if (!seen.insert({static_cast<int>(scene.textures.format), static_cast<int>(scene.sampler.filter),
+                      static_cast<int>(scene.sampler.wrap), static_cast<int>(scene.framebuffer), scene.flushEachPass})
              .second)
       continue;
     const PreparedScene prepared = prepareScene(scene);
-    emu::CombinationEmuOptions pruned{scene.flushEachPass, o.threads, false}, forced{scene.flushEachPass, o.threads, true};
+    emu::CombinationEmuOptions pruned{scene.flushEachPass, o.threads, false},
+        forced{scene.flushEachPass, o.threads, true};
     emu::EmulatedPlanes a, b;
     try {
-      const Timing tp = measure([&] { a = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, profile, pruned); });
-      const Timing tf = measure([&] { b = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, profile, forced); });
+      const Timing tp = measure([&] {
+        a = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, profile,
+                                    pruned);
+      });
+      const Timing tf = measure([&] {
+        b = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, profile,
+                                    forced);
+      });
       std::string skipped;
       if (scene.sampler.filter == ref::Filter::Nearest) skipped = "weights + lerps (nearest)";
       if (ref::unormBits(scene.framebuffer) == 0)
-        skipped += std::string(skipped.empty() ? "" : "; ") + "clamp" + (scene.framebuffer == ref::FramebufferFormat::RGBA32F ? " + tile store" : "");
+        skipped += std::string(skipped.empty() ? "" : "; ") + "clamp" +
+                   (scene.framebuffer == ref::FramebufferFormat::RGBA32F ? " + tile store" : "");
       if (skipped.empty()) skipped = "none";
-      const std::string state = std::string(ref::name(scene.textures.format)) + " " + std::string(ref::name(scene.sampler.filter)) + " " +
-                                std::string(ref::name(scene.sampler.wrap)) + " -> " + std::string(ref::name(scene.framebuffer)) +
-                                (scene.flushEachPass ? " flush" : "");
+      const std::string state = std::string(ref::name(scene.textures.format)) + " " +
+                                std::string(ref::name(scene.sampler.filter)) + " " +
+                                std::string(ref::name(scene.sampler.wrap)) + " -> " +
+                                std::string(ref::name(scene.framebuffer)) + (scene.flushEachPass ? " flush" : "");
       addRow(t, c.id, state, skipped, tp, tf, a.planes.codes == b.planes.codes && a.unmodelled == b.unmodelled);
       ++taken[rankOf[k]];
-      t.data["rows"].back()["effects"] = joined(emu::combinationEffects(prepared.textures, scene.sampler, scene.framebuffer, profile, pruned,
-                                                                        prepared.frame.width, prepared.frame.height));
+      t.data["rows"].back()["effects"] =
+          joined(emu::combinationEffects(prepared.textures, scene.sampler, scene.framebuffer, profile, pruned,
+                                         prepared.frame.width, prepared.frame.height));
     } catch (const std::invalid_argument&) {  // the profile cannot model the target size
-      seen.erase({static_cast<int>(scene.textures.format), static_cast<int>(scene.sampler.filter), static_cast<int>(scene.sampler.wrap),
-                  static_cast<int>(scene.framebuffer), scene.flushEachPass});
+      seen.erase({static_cast<int>(scene.textures.format), static_cast<int>(scene.sampler.filter),
+                  static_cast<int>(scene.sampler.wrap), static_cast<int>(scene.framebuffer), scene.flushEachPass});
     }
   }
   return t;
@@ -116,17 +135,22 @@ BenchTable timeVaryingTable(const BenchOptions& o, const emu::PrecisionProfile& 
     } catch (const std::exception&) {
       continue;
     }
-    if (!seen.insert({static_cast<int>(scene.decoder), static_cast<int>(scene.encoding.encoding), scene.composite}).second) continue;
+    if (!seen.insert({static_cast<int>(scene.decoder), static_cast<int>(scene.encoding.encoding), scene.composite})
+             .second)
+      continue;
     const ref::TimeSeries series = makeSeries(scene);
-    const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, ref::transferFunction(scene.transfer), scene.encoding);
+    const ref::TimeVaryingTextures tex =
+        ref::encodeTimeVarying(series, ref::transferFunction(scene.transfer), scene.encoding);
     const ref::PlaneFrame frame = makeFrame(scene, tex.layout);
     const int step = stepsOf(scene).front();
     bool identical = true;
     Timing tp, tf;
     if (scene.composite) {
       ref::RgbaStack a, b;
-      tp = measure([&] { a = emu::emulateComposite(tex, scene.decoder, step, frame, profile, o.threads, false, false); });
-      tf = measure([&] { b = emu::emulateComposite(tex, scene.decoder, step, frame, profile, o.threads, false, true); });
+      tp = measure(
+          [&] { a = emu::emulateComposite(tex, scene.decoder, step, frame, profile, o.threads, false, false); });
+      tf =
+          measure([&] { b = emu::emulateComposite(tex, scene.decoder, step, frame, profile, o.threads, false, true); });
       identical = a.colours == b.colours;
     } else {
       emu::EmulatedDecode a, b;
@@ -136,19 +160,26 @@ BenchTable timeVaryingTable(const BenchOptions& o, const emu::PrecisionProfile& 
       for (std::size_t i = 0; identical && i < a.samples.size(); ++i)
         identical = std::memcmp(a.samples[i].value.data(), b.samples[i].value.data(), sizeof(float) * 4) == 0;
     }
-    const std::string state = std::string(ref::name(scene.decoder)) + " / " + std::string(ref::name(scene.encoding.encoding)) +
+    const std::string state = std::string(ref::name(scene.decoder)) + " / " +
+                              std::string(ref::name(scene.encoding.encoding)) +
                               (scene.composite ? ", composited" : ", planes");
-    addRow(t, c.id, state, scene.decoder == ref::DecoderVariant::TexelFetch ? "weights + lerps (texelFetch)" : "weights + lerps (nearest)", tp, tf,
-           identical);
+    addRow(
+        t, c.id, state,
+        scene.decoder == ref::DecoderVariant::TexelFetch ? "weights + lerps (texelFetch)" : "weights + lerps (nearest)",
+        tp, tf, identical);
   }
   return t;
 }
 
 const char* kNotes =
-    "Pruned: the stages the scene's state calls for (the case's `effects`). Forced (`forceAllEffects` in the emulator options): every stage the "
-    "pruning skips is run anyway, as an identity: NEAREST fetches (and texelFetch) run the LINEAR path's float weights and the seven trilinear "
-    "lerps per channel with every tap on the fetched texel; float framebuffers run the per-pass clamp of source and result with the format's "
-    "bounds (-inf, +inf) and a float32 tile is stored and reloaded every pass. Times are medians of up to five runs in this process, on ";
+    "Pruned: the stages the scene's state calls for (the case's `effects`). Forced (`forceAllEffects` in the emulator "
+    "options): every stage the "
+    "pruning skips is run anyway, as an identity: NEAREST fetches (and texelFetch) run the LINEAR path's float weights "
+    "and the seven trilinear "
+    "lerps per channel with every tap on the fetched texel; float framebuffers run the per-pass clamp of source and "
+    "result with the format's "
+    "bounds (-inf, +inf) and a float32 tile is stored and reloaded every pass. Times are medians of up to five runs in "
+    "this process, on ";
 
 }  // namespace
 
@@ -157,8 +188,9 @@ std::vector<std::string> pruningBenchIds() { return {"pruning.combination", "pru
 std::vector<BenchTable> pruningBench(const BenchOptions& o, const emu::PrecisionProfile* chosen) {
   std::vector<BenchTable> tables;
   const emu::PrecisionProfile* profile = chosen ? chosen : emu::findProfile("llvmpipe");
-  const std::string notes = kNotes + std::to_string(ref::workerCount(o.threads)) +
-                            " thread(s). 'identical bits': every code (and for decoded planes every sample's float32 value) compared.";
+  const std::string notes =
+      kNotes + std::to_string(ref::workerCount(o.threads)) +
+      " thread(s). 'identical bits': every code (and for decoded planes every sample's float32 value) compared.";
   if (globMatch(o.filter, "pruning.combination")) {
     tables.push_back(combinationTable(o, *profile));
     tables.back().notes = notes;

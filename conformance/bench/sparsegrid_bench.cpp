@@ -1,14 +1,14 @@
-#include "conformance/framework/selection.h"
 #include "conformance/bench/sparsegrid_bench.h"
+#include "conformance/framework/selection.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 
 #include "conformance/bench/study.h"
-#include "conformance/modules/catalog.h"
 #include "conformance/framework/compare.h"
 #include "conformance/framework/progress.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/modules/sparsegrid/prepared_scene.h"
 #include "conformance/modules/sparsegrid/sparsegrid_catalog.h"
 #include "emulation/combination_emu.h"
@@ -34,7 +34,8 @@ ref::PlaneFrame planeOf(const ref::PlaneFrame& frame, int k) {
 // Time to sample every point of `frame` with fn. When a sample of evenly spread planes predicts
 // more than `budget` seconds, the time is extrapolated from those planes and marked estimated
 // (as the paper marks its estimates).
-Timing sampleTiming(const ref::PlaneFrame& frame, const std::function<double(glm::dvec3)>& fn, int threads, double budget) {
+Timing sampleTiming(const ref::PlaneFrame& frame, const std::function<double(glm::dvec3)>& fn, int threads,
+                    double budget) {
   const int probes = std::min(frame.planes, 8);
   double probeSeconds = 0.0;
   for (int p = 0; p < probes; ++p) {
@@ -64,13 +65,15 @@ BenchTable timeTable(const BenchOptions& o, gpu::Context& gl, const emu::Precisi
   const double budget = o.quick ? 2.0 : 30.0;
   BenchTable t;
   t.id = "sparsegrid.table1_time";
-  t.title = "Sparse grids, Table 1 on this machine: seconds per frame (" + std::to_string(width) + "x" + std::to_string(width) +
-            " pixels, " + std::to_string(planes) + " samples per ray, X-ray)";
+  t.title = "Sparse grids, Table 1 on this machine: seconds per frame (" + std::to_string(width) + "x" +
+            std::to_string(width) + " pixels, " + std::to_string(planes) + " samples per ray, X-ray)";
   t.columns = {"method"};
   for (int l = first; l <= last; ++l) t.columns.push_back("level " + std::to_string(l));
-  std::vector<std::string> build{"sparse grid build (sampling + hierarchization)"}, direct{"sparse grid, direct (eq. 7)"},
-      combination{"combination technique, CPU double (eq. 11)"}, glRow{"combination on GL: " + gl.info().renderer},
-      emuRow{"combination emulated: profile " + std::string(profile ? profile->name : "none")}, full{"full-grid extraction"};
+  std::vector<std::string> build{"sparse grid build (sampling + hierarchization)"},
+      direct{"sparse grid, direct (eq. 7)"}, combination{"combination technique, CPU double (eq. 11)"},
+      glRow{"combination on GL: " + gl.info().renderer},
+      emuRow{"combination emulated: profile " + std::string(profile ? profile->name : "none")},
+      full{"full-grid extraction"};
   Progress progress("voxref bench: table 1", last - first + 1);
   for (int level = first; level <= last; ++level) {
     progress.update(level - first, "level " + std::to_string(level));
@@ -78,9 +81,14 @@ BenchTable timeTable(const BenchOptions& o, gpu::Context& gl, const emu::Precisi
     PreparedScene prepared;
     const Timing buildTime = measure([&] { prepared = prepareScene(scene); });
     const ref::SparseGrid grid = ref::SparseGrid::fromField(scene.grid, loadField(scene.data));
-    const Timing directTime = sampleTiming(prepared.frame, [&](glm::dvec3 p) { return grid.value(p); }, o.threads, budget);
-    const Timing combTime = sampleTiming(prepared.frame, [&](glm::dvec3 p) { return prepared.combination->value(p); }, o.threads, budget);
-    nlohmann::json row = {{"level", level}, {"build", toJson(buildTime)}, {"direct", toJson(directTime)}, {"combination", toJson(combTime)}};
+    const Timing directTime = sampleTiming(
+        prepared.frame, [&](glm::dvec3 p) { return grid.value(p); }, o.threads, budget);
+    const Timing combTime = sampleTiming(
+        prepared.frame, [&](glm::dvec3 p) { return prepared.combination->value(p); }, o.threads, budget);
+    nlohmann::json row = {{"level", level},
+                          {"build", toJson(buildTime)},
+                          {"direct", toJson(directTime)},
+                          {"combination", toJson(combTime)}};
     build.push_back(formatSeconds(buildTime));
     direct.push_back(formatSeconds(directTime));
     combination.push_back(formatSeconds(combTime));
@@ -96,7 +104,8 @@ BenchTable timeTable(const BenchOptions& o, gpu::Context& gl, const emu::Precisi
     }
     if (profile) {
       const Timing e = measure([&] {
-        (void)emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, *profile, {false, o.threads});
+        (void)emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, *profile,
+                                      {false, o.threads});
       });
       emuRow.push_back(formatSeconds(e));
       row["emulation"] = toJson(e);
@@ -109,25 +118,32 @@ BenchTable timeTable(const BenchOptions& o, gpu::Context& gl, const emu::Precisi
       row["full_grid_extraction"] = toJson(f);
     } else {
       full.push_back("n/a");
-      row["full_grid_extraction"] = {{"not_run", "needs " + bytesText(static_cast<double>(ref::fullGridBytes(level))) + " of doubles"}};
+      row["full_grid_extraction"] = {
+          {"not_run", "needs " + bytesText(static_cast<double>(ref::fullGridBytes(level))) + " of doubles"}};
     }
     t.data["levels"].push_back(row);
   }
   progress.finish();
   t.rows = {build, direct, combination, glRow, emuRow, full};
   if (!o.quick) {
-    t.rows.push_back({"paper: sparse grid (SGI O2, 1999)", "755 s", "1040 s", "1380 s", "1935 s", "2750 s", "3910 s*", "5400 s*"});
+    t.rows.push_back(
+        {"paper: sparse grid (SGI O2, 1999)", "755 s", "1040 s", "1380 s", "1935 s", "2750 s", "3910 s*", "5400 s*"});
     t.rows.push_back({"paper: combination", "83 s", "124 s", "173 s", "233 s", "309 s", "454 s", "726 s"});
-    t.rows.push_back({"paper: OpenGL (RealityEngine II)", "3.6 s", "4.5 s", "5.5 s", "6.8 s", "8.4 s", "10.3 s", "12.5 s"});
-    t.rows.push_back({"paper: full grid extraction", "4.93 s", "53.9 s", "593 s", "1.8 h", "20 h*", "9.5 d*", "105 d*"});
+    t.rows.push_back(
+        {"paper: OpenGL (RealityEngine II)", "3.6 s", "4.5 s", "5.5 s", "6.8 s", "8.4 s", "10.3 s", "12.5 s"});
+    t.rows.push_back(
+        {"paper: full grid extraction", "4.93 s", "53.9 s", "593 s", "1.8 h", "20 h*", "9.5 d*", "105 d*"});
   }
-  t.notes = "Gaussian-blob data with boundary points; textures r16 padded to 2^(l+1) (the paper's), framebuffer rgba16 "
-            "(the paper had 12 bits; GL has no 12-bit buffer). CPU paths on " + std::to_string(ref::workerCount(o.threads)) +
-            " thread(s). Medians of up to 5 runs. * = extrapolated from " +
-            "8 evenly spread planes because the whole frame would take more than " + std::to_string(static_cast<int>(budget)) +
-            " s. Levels 11 and 12 on GL draw 2048-texel bricks (GL_MAX_3D_TEXTURE_SIZE here: " +
-            std::to_string(gl.info().max3DTextureSize) + "); n/a for extraction: the full grid of doubles exceeds 4 GB. Full-grid extraction here dehierarchizes "
-            "(linear in the grid size); the paper evaluated the sparse grid at every node.";
+  t.notes =
+      "Gaussian-blob data with boundary points; textures r16 padded to 2^(l+1) (the paper's), framebuffer rgba16 "
+      "(the paper had 12 bits; GL has no 12-bit buffer). CPU paths on " +
+      std::to_string(ref::workerCount(o.threads)) + " thread(s). Medians of up to 5 runs. * = extrapolated from " +
+      "8 evenly spread planes because the whole frame would take more than " +
+      std::to_string(static_cast<int>(budget)) +
+      " s. Levels 11 and 12 on GL draw 2048-texel bricks (GL_MAX_3D_TEXTURE_SIZE here: " +
+      std::to_string(gl.info().max3DTextureSize) +
+      "); n/a for extraction: the full grid of doubles exceeds 4 GB. Full-grid extraction here dehierarchizes "
+      "(linear in the grid size); the paper evaluated the sparse grid at every node.";
   return t;
 }
 
@@ -138,13 +154,15 @@ BenchTable memoryTable(const BenchOptions& o) {
   t.title = "Sparse grids, Table 2: memory (4-byte values; GL textures 2-byte r16)";
   t.columns = {"quantity"};
   for (int l = first; l <= last; ++l) t.columns.push_back("level " + std::to_string(l));
-  std::vector<std::string> fullPts{"points of full grid"}, fullMem{"full grid"}, sparseZero{"sparse grid, zero boundary (points)"},
-      sparseZeroMem{"sparse grid, zero boundary"}, sparseB{"sparse grid with boundary (points)"}, sparseBMem{"sparse grid with boundary"},
-      comb{"combination grids"}, glPadded{"GL textures, padded 2^(l+1) (paper)"}, glExact{"GL textures, exact 2^l + 1"},
-      grids{"number of grids"}, positive{"positive grids (n+)"};
+  std::vector<std::string> fullPts{"points of full grid"}, fullMem{"full grid"},
+      sparseZero{"sparse grid, zero boundary (points)"}, sparseZeroMem{"sparse grid, zero boundary"},
+      sparseB{"sparse grid with boundary (points)"}, sparseBMem{"sparse grid with boundary"}, comb{"combination grids"},
+      glPadded{"GL textures, padded 2^(l+1) (paper)"}, glExact{"GL textures, exact 2^l + 1"}, grids{"number of grids"},
+      positive{"positive grids (n+)"};
   for (int n = first; n <= last; ++n) {
     const double side = std::ldexp(1.0, n) + 1;
-    const std::size_t zero = ref::SubspaceSet({n, false}).pointCount(), withB = ref::SubspaceSet({n, true}).pointCount();
+    const std::size_t zero = ref::SubspaceSet({n, false}).pointCount(),
+                      withB = ref::SubspaceSet({n, true}).pointCount();
     double combPoints = 0, padded = 0, exact = 0;
     int pos = 0;
     const auto shapes = ref::combinationGridShapes(n);
@@ -188,7 +206,8 @@ BenchTable memoryTable(const BenchOptions& o) {
     t.rows.push_back({"paper: OpenGL", "43 kB", "124 kB", "338 kB", "884 kB", "2.2 MB", "5.4 MB", "13.1 MB"});
     t.rows.push_back({"paper: num. low res. full grids", "31", "46", "64", "85", "109", "136", "166"});
   }
-  t.notes = "Counts are exact (point counts are checked against an independent count in the unit tests); kB = 1024 bytes.";
+  t.notes =
+      "Counts are exact (point counts are checked against an independent count in the unit tests); kB = 1024 bytes.";
   return t;
 }
 
@@ -199,12 +218,13 @@ BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::Pre
   const int width = o.quick ? 24 : 100, planes = o.quick ? 12 : 64;
   BenchTable t;
   t.id = "sparsegrid.accuracy";
-  t.title = "Sparse grids: what accuracy costs, per framebuffer format (" + std::to_string(width) + "x" + std::to_string(width) + "x" +
-            std::to_string(planes) + " samples, r16 padded textures)";
-  t.columns = {"framebuffer", "level", "max abs error", "max error where reference >= 0", "RMSE", "PSNR dB", "error in LSB", "GL s",
-               "emulation s"};
-  const ref::FramebufferFormat formats[] = {ref::FramebufferFormat::RGBA8, ref::FramebufferFormat::RGBA12, ref::FramebufferFormat::RGBA16,
-                                            ref::FramebufferFormat::RGBA16F, ref::FramebufferFormat::RGBA32F};
+  t.title = "Sparse grids: what accuracy costs, per framebuffer format (" + std::to_string(width) + "x" +
+            std::to_string(width) + "x" + std::to_string(planes) + " samples, r16 padded textures)";
+  t.columns = {"framebuffer",  "level", "max abs error", "max error where reference >= 0", "RMSE", "PSNR dB",
+               "error in LSB", "GL s",  "emulation s"};
+  const ref::FramebufferFormat formats[] = {ref::FramebufferFormat::RGBA8, ref::FramebufferFormat::RGBA12,
+                                            ref::FramebufferFormat::RGBA16, ref::FramebufferFormat::RGBA16F,
+                                            ref::FramebufferFormat::RGBA32F};
   Progress progress("voxref bench: accuracy", (last - first + 1) * 5);
   long step = 0;
   for (int level = first; level <= last; ++level) {
@@ -217,13 +237,16 @@ BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::Pre
       Timing glTime, emuTime;
       std::string glText = "n/a", emuText = "n/a";
       if (ref::existsInGl(fb)) try {
-          glTime = measure([&] { glPlanes = gpu::renderCombinationGl(gl, prepared.textures, prepared.frame, scene.sampler, fb); });
+          glTime = measure(
+              [&] { glPlanes = gpu::renderCombinationGl(gl, prepared.textures, prepared.frame, scene.sampler, fb); });
           glText = formatSeconds(glTime);
         } catch (const gpu::GlUnsupported&) {
         }
       if (profile) {
         emuTime = measure([&] {
-          emuPlanes = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, fb, *profile, {false, o.threads}).planes;
+          emuPlanes = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, fb, *profile,
+                                              {false, o.threads})
+                          .planes;
         });
         emuText = formatSeconds(emuTime);
       }
@@ -234,7 +257,8 @@ BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::Pre
       // Fixed-point buffers cannot hold the interpolant's overshoot below 0: separate that loss.
       double nonNegativeMax = 0.0;
       for (std::size_t i = 0; i < values.values.size(); ++i)
-        if (reference.values[i] >= 0.0) nonNegativeMax = std::max(nonNegativeMax, std::fabs(values.values[i] - reference.values[i]));
+        if (reference.values[i] >= 0.0)
+          nonNegativeMax = std::max(nonNegativeMax, std::fabs(values.values[i] - reference.values[i]));
       const int bits = ref::unormBits(fb);
       const double lsb = bits ? prepared.textures.readbackScale / (std::ldexp(1.0, bits) - 1.0) : 0.0;
       char maxAbs[32], maxNonNeg[32], rmse[32], psnr[32], inLsb[32];
@@ -243,20 +267,27 @@ BenchTable accuracyTable(const BenchOptions& o, gpu::Context& gl, const emu::Pre
       std::snprintf(rmse, sizeof rmse, "%.3g", e.rmse);
       std::snprintf(psnr, sizeof psnr, "%.1f", e.psnrDb);
       std::snprintf(inLsb, sizeof inLsb, bits ? "%.1f" : "-", bits ? nonNegativeMax / lsb : 0.0);
-      t.rows.push_back({std::string(ref::name(fb)) + (glPlanes ? "" : " (emulated)"), std::to_string(level), maxAbs, maxNonNeg, rmse, psnr,
-                        inLsb, glText, emuText});
-      t.data["rows"].push_back({{"framebuffer", ref::name(fb)}, {"level", level}, {"max_abs_error", e.maxAbs}, {"max_abs_error_where_reference_nonnegative", nonNegativeMax}, {"rmse", e.rmse},
+      t.rows.push_back({std::string(ref::name(fb)) + (glPlanes ? "" : " (emulated)"), std::to_string(level), maxAbs,
+                        maxNonNeg, rmse, psnr, inLsb, glText, emuText});
+      t.data["rows"].push_back({{"framebuffer", ref::name(fb)},
+                                {"level", level},
+                                {"max_abs_error", e.maxAbs},
+                                {"max_abs_error_where_reference_nonnegative", nonNegativeMax},
+                                {"rmse", e.rmse},
                                 {"psnr_db", std::isfinite(e.psnrDb) ? nlohmann::json(e.psnrDb) : nlohmann::json("inf")},
-                                {"judged", glPlanes ? "gl" : "emulation"}, {"gl", glPlanes ? toJson(glTime) : nlohmann::json(nullptr)},
+                                {"judged", glPlanes ? "gl" : "emulation"},
+                                {"gl", glPlanes ? toJson(glTime) : nlohmann::json(nullptr)},
                                 {"emulation", emuPlanes ? toJson(emuTime) : nlohmann::json(nullptr)}});
     }
   }
   progress.finish();
-  t.notes = "Errors of the read-back planes (times n+) against the double combination technique at the same sample points "
-            "(values in [0, 1]; PSNR against peak 1). Sparse-grid interpolants overshoot below 0 near steep data, which "
-            "fixed-point buffers clamp: the second error column leaves those samples out. 'error in LSB' is that error in "
-            "units of n+ / (2^b - 1), the framebuffer's quantum after the read-back scale. The GL path and the emulation give identical bits here "
-            "(checked by voxref conform), so one error column serves both. rgba12 has no GL implementation: emulated.";
+  t.notes =
+      "Errors of the read-back planes (times n+) against the double combination technique at the same sample points "
+      "(values in [0, 1]; PSNR against peak 1). Sparse-grid interpolants overshoot below 0 near steep data, which "
+      "fixed-point buffers clamp: the second error column leaves those samples out. 'error in LSB' is that error in "
+      "units of n+ / (2^b - 1), the framebuffer's quantum after the read-back scale. The GL path and the emulation "
+      "give identical bits here "
+      "(checked by voxref conform), so one error column serves both. rgba12 has no GL implementation: emulated.";
   return t;
 }
 

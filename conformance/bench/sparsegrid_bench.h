@@ -15,6 +15,7 @@ std::vector<std::string> sparseGridBenchIds();
 // study.sparsegrid (study.h): framebuffer formats and texture formats on GL, and the sampler
 // paths of every known profile through their emulations.
 BenchTable sparseGridStudy(const BenchOptions& options, gpu::Context& gl, const emu::PrecisionProfile* profile);
-std::vector<BenchTable> sparseGridBench(const BenchOptions& options, gpu::Context& gl, const emu::PrecisionProfile* profile);
+std::vector<BenchTable> sparseGridBench(const BenchOptions& options, gpu::Context& gl,
+                                        const emu::PrecisionProfile* profile);
 
 }  // namespace voxref::conf

@@ -13,8 +13,8 @@ std::string errorText(double v) { return std::isnan(v) ? "n/a" : formatNumber("%
 
 std::string spreadText(const Timing& t) {
   if (t.runs == 0) return "-";
-  return formatSeconds({t.min, t.min, t.min, 1, false}) + " - " + formatSeconds({t.max, t.max, t.max, 1, false}) + " (" +
-         std::to_string(t.runs) + " runs)";
+  return formatSeconds({t.min, t.min, t.min, 1, false}) + " - " + formatSeconds({t.max, t.max, t.max, 1, false}) +
+         " (" + std::to_string(t.runs) + " runs)";
 }
 
 std::optional<double> numberAt(const nlohmann::json& j, const char* key) {
@@ -39,7 +39,8 @@ std::string bytesText(double bytes) {
   return buf;
 }
 
-BenchTable studyTable(const std::string& id, const std::string& title, const std::vector<StudyGroup>& groups, const std::string& notes) {
+BenchTable studyTable(const std::string& id, const std::string& title, const std::vector<StudyGroup>& groups,
+                      const std::string& notes) {
   BenchTable t;
   t.id = id;
   t.title = title;
@@ -96,7 +97,8 @@ std::vector<AccuracyPlot> studyPlots(const BenchTable& table) {
       p.points.push_back({median, *y});
       p.costSpread.push_back({numberAt(time, "min_s").value_or(median), numberAt(time, "max_s").value_or(median)});
     }
-    if (!left.empty()) p.note = "Not plotted (not timed or no " + std::string(byMemory ? "memory" : "error") + " figure): " + left + ".";
+    if (!left.empty())
+      p.note = "Not plotted (not timed or no " + std::string(byMemory ? "memory" : "error") + " figure): " + left + ".";
     plots.push_back(std::move(p));
   }
   return plots;

@@ -28,16 +28,16 @@ struct StudyVariant {
   // `missing` says why and the variant is listed but not plotted).
   double error = std::numeric_limits<double>::quiet_NaN();
   nlohmann::json figures = nlohmann::json::object();  // every error figure measured
-  Timing time;        // runs == 0: not timed (see `missing`)
+  Timing time;                                        // runs == 0: not timed (see `missing`)
   double memoryBytes = std::numeric_limits<double>::quiet_NaN();
   std::string missing;  // why error or time is absent; empty when both were measured
 };
 
 struct StudyGroup {
-  std::string knob;         // what varies: "framebuffer format"
-  std::string error;        // what the error figure is: "RMSE against the double combination technique"
-  std::string time;         // what was timed: "GL frame (llvmpipe), read-back included"
-  std::string memory;       // what the memory figure counts: "textures + one plane's colour buffer"
+  std::string knob;    // what varies: "framebuffer format"
+  std::string error;   // what the error figure is: "RMSE against the double combination technique"
+  std::string time;    // what was timed: "GL frame (llvmpipe), read-back included"
+  std::string memory;  // what the memory figure counts: "textures + one plane's colour buffer"
   // Plot memory instead of error on the vertical axis: for lossless variants, whose error is 0
   // by construction (checked), the trade-off is size against time.
   bool plotMemory = false;
@@ -48,7 +48,8 @@ struct StudyGroup {
 // The markdown and JSON of one system's study: a table with one row per variant (knob, variant,
 // error, median time, spread and runs, memory) and, in data["groups"], every group with its
 // variants as numbers (what studyPlots() and results.json read).
-BenchTable studyTable(const std::string& id, const std::string& title, const std::vector<StudyGroup>& groups, const std::string& notes);
+BenchTable studyTable(const std::string& id, const std::string& title, const std::vector<StudyGroup>& groups,
+                      const std::string& notes);
 
 // One plot per group of a study table (ids "<table id>.<n>"), from table.data alone: error (or
 // memory) against median time, each time with its min-max spread as a horizontal bar; variants

@@ -12,6 +12,7 @@
 namespace voxref::conf {
 
 std::vector<std::string> timeVaryingBenchIds();
-std::vector<BenchTable> timeVaryingBench(const BenchOptions& options, gpu::Context& gl, const emu::PrecisionProfile* profile);
+std::vector<BenchTable> timeVaryingBench(const BenchOptions& options, gpu::Context& gl,
+                                         const emu::PrecisionProfile* profile);
 
 }  // namespace voxref::conf

@@ -2,9 +2,9 @@
 
 #include <stdexcept>
 
-#include "conformance/modules/catalog.h"
 #include "conformance/framework/controls/runner_controls.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/modules/catalog.h"
 
 namespace voxref::cli {
 

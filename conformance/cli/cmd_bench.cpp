@@ -1,5 +1,5 @@
-#include <memory>
 #include <iostream>
+#include <memory>
 
 #include "conformance/bench/bench.h"
 #include "conformance/cli/commands.h"
@@ -16,7 +16,6 @@ struct BenchOptions {
   int threads = 0;
   std::filesystem::path volumes;
 };
-
 
 int runBench(const BenchOptions& o) {
   const auto driver = gpu::parseDriver(o.driver);
@@ -35,7 +34,8 @@ Subcommand addBenchCommand(CLI::App& app) {
   sub->add_option("--driver", o->driver, "GL driver")->default_val("llvmpipe");
   sub->add_option("--threads", o->threads, "CPU threads for CPU paths (0: all)")->default_val(0);
   sub->add_flag("--quick", o->quick, "small sizes and few levels, for a smoke run");
-  sub->add_option("--volumes", o->volumes, "folder of the real volumes (default: ../shared/data/volumes beside the source tree)");
+  sub->add_option("--volumes", o->volumes,
+                  "folder of the real volumes (default: ../shared/data/volumes beside the source tree)");
 
   return {sub, [o] { return runBench(*o); }};
 }

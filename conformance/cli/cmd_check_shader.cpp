@@ -1,16 +1,16 @@
 // voxref check-shader: one case with the user's fragment shader in place of the built-in stage,
 // judged by the case's own oracles (docs/shader-interface.md).
-#include <memory>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
-#include "conformance/framework/case_context.h"
-#include "conformance/modules/catalog.h"
 #include "conformance/cli/commands.h"
+#include "conformance/framework/case_context.h"
 #include "conformance/framework/driver_info.h"
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/report_files.h"
 #include "conformance/framework/runner.h"
+#include "conformance/io/atomic_file.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/modules/sparsegrid/sparsegrid_scene.h"
 #include "conformance/modules/timevarying/timevarying_scene.h"
 #include "gpu/gl_error.h"
@@ -44,18 +44,23 @@ const conf::Case& findCase(const std::vector<conf::Case>& cases, const std::stri
 // The stage the case runs on GL, from its scene as `voxref render` reads it.
 const gpu::ShaderStage& stageOf(const conf::Case& c) {
   const std::string none = "case " + c.id + " has no shader stage a user can replace";
-  if (!c.scene) throw conf::UsageError(none + " (it renders no single scene; docs/shader-interface.md lists the stages)");
-  if (c.scene->value("system", "sparsegrid") == "timevarying") return gpu::decoderStage(conf::parseTimeVaryingScene(*c.scene).decoder);
+  if (!c.scene)
+    throw conf::UsageError(none + " (it renders no single scene; docs/shader-interface.md lists the stages)");
+  if (c.scene->value("system", "sparsegrid") == "timevarying")
+    return gpu::decoderStage(conf::parseTimeVaryingScene(*c.scene).decoder);
   const conf::SparseGridScene scene = conf::parseSparseGridScene(*c.scene);
   if (!ref::existsInGl(scene.framebuffer))
-    throw conf::UsageError(none + " (GL has no " + std::string(ref::name(scene.framebuffer)) + " colour buffer: emulated only)");
+    throw conf::UsageError(none + " (GL has no " + std::string(ref::name(scene.framebuffer)) +
+                           " colour buffer: emulated only)");
   return gpu::combinationStage();
 }
 
 int printInterface(const conf::Case& c, const gpu::ShaderStage& stage) {
-  std::cout << "case " << c.id << " runs stage `" << stage.name << "` (built-in gpu/shaders/" << stage.fragmentFile << ")\n\n"
+  std::cout << "case " << c.id << " runs stage `" << stage.name << "` (built-in gpu/shaders/" << stage.fragmentFile
+            << ")\n\n"
             << gpu::commonInterface() << "\n\n"
-            << gpu::stageInterface(stage) << "\n\n// ---- built-in " << stage.fragmentFile << ", a starting point ----\n"
+            << gpu::stageInterface(stage) << "\n\n// ---- built-in " << stage.fragmentFile
+            << ", a starting point ----\n"
             << stage.fragmentSource;
   return 0;
 }
@@ -63,8 +68,8 @@ int printInterface(const conf::Case& c, const gpu::ShaderStage& stage) {
 void printResult(const conf::CaseResult& r, const gpu::ShaderOverride& shader) {
   std::cout << "case " << r.id << " with " << shader.fileName << " as `" << shader.stage << "`\n";
   for (const conf::OracleResult& o : r.oracles)
-    std::cout << "  " << o.oracle << std::string(o.oracle.size() < 9 ? 9 - o.oracle.size() : 1, ' ') << conf::name(o.verdict) << "  "
-              << o.summary << "\n";
+    std::cout << "  " << o.oracle << std::string(o.oracle.size() < 9 ? 9 - o.oracle.size() : 1, ' ')
+              << conf::name(o.verdict) << "  " << o.summary << "\n";
   std::cout << "status: " << conf::name(r.status) << (r.message.empty() ? "" : ": " + r.message) << "\n";
 }
 
@@ -81,8 +86,9 @@ void checkShaderText(const std::string& source, const std::filesystem::path& fil
     if (c == 0 || length == 0) {
       char hex[8];
       std::snprintf(hex, sizeof hex, "0x%02x", c);
-      throw conf::UsageError(file.string() + ": byte " + std::to_string(i) + " (line " + std::to_string(line) + ", column " + std::to_string(column) +
-                             "): " + hex + (c == 0 ? " (NUL)" : "") + " is not UTF-8 text; a GLSL shader is UTF-8 text without NUL bytes");
+      throw conf::UsageError(file.string() + ": byte " + std::to_string(i) + " (line " + std::to_string(line) +
+                             ", column " + std::to_string(column) + "): " + hex + (c == 0 ? " (NUL)" : "") +
+                             " is not UTF-8 text; a GLSL shader is UTF-8 text without NUL bytes");
     }
     if (c == '\n') {
       ++line;
@@ -127,15 +133,19 @@ int runCheckShader(const CheckShaderOptions& o) {
     throw conf::UsageError(e.what());
   }
 
-  std::cout << "voxref check-shader: " << c.id << " on " << gl->info().renderer << " (" << gl->info().version << "), profile "
-            << (profile ? std::string(profile->name) : std::string("none: envelope oracle alone")) << std::endl;
+  std::cout << "voxref check-shader: " << c.id << " on " << gl->info().renderer << " (" << gl->info().version
+            << "), profile " << (profile ? std::string(profile->name) : std::string("none: envelope oracle alone"))
+            << std::endl;
 
   // Compile and link first, so that errors are the user's, with the file's line numbers.
   try {
     (void)gpu::buildStageProgram(*gl, stage, &shader);
   } catch (const gpu::ShaderError& e) {
-    std::cerr << "voxref: " << shader.fileName << " does not build as stage `" << stage.name << "` (line numbers are the file's):\n"
-              << e.infoLog() << "(voxref prepends #version, PRECISE and sample_point.glsl: docs/shader-interface.md, or voxref check-shader --case "
+    std::cerr << "voxref: " << shader.fileName << " does not build as stage `" << stage.name
+              << "` (line numbers are the file's):\n"
+              << e.infoLog()
+              << "(voxref prepends #version, PRECISE and sample_point.glsl: docs/shader-interface.md, or voxref "
+                 "check-shader --case "
               << c.id << " --print-interface)\n";
     return 2;
   }
@@ -150,7 +160,8 @@ int runCheckShader(const CheckShaderOptions& o) {
   run.driver = conf::driverJson(gl->info(), profile, how);
   conf::CaseResult r = conf::runCase(c, ctx);
   r.description += " [user shader " + shader.fileName + " as " + shader.stage + "]";
-  r.figures["user_shader"] = {{"file", shader.fileName}, {"stage", shader.stage}, {"programs_built", shader.programsBuilt}};
+  r.figures["user_shader"] = {
+      {"file", shader.fileName}, {"stage", shader.stage}, {"programs_built", shader.programsBuilt}};
   printResult(r, shader);
   run.finished = conf::utcTimestamp();
   run.execution = {{"isolation", "none: the case ran in this process"}, {"jobs", 1}};
@@ -171,13 +182,16 @@ int runCheckShader(const CheckShaderOptions& o) {
 Subcommand addCheckShaderCommand(CLI::App& app, const std::string& invocation) {
   auto o = std::make_shared<CheckShaderOptions>();
   o->command = invocation;
-  CLI::App* sub = app.add_subcommand("check-shader", "run one case with your fragment shader in place of the built-in stage");
+  CLI::App* sub =
+      app.add_subcommand("check-shader", "run one case with your fragment shader in place of the built-in stage");
   sub->add_option("--case", o->caseId, "case id from voxref list")->required();
   sub->add_option("--shader", o->shader, "your GLSL fragment shader, without #version (docs/shader-interface.md)");
-  sub->add_flag("--print-interface", o->printInterface, "print the case's stage: its interface and the built-in shader");
+  sub->add_flag("--print-interface", o->printInterface,
+                "print the case's stage: its interface and the built-in shader");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
   sub->add_option("--profile", o->profile, "auto or a precision profile name")->default_val("auto");
-  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-check-shader");
+  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
+      ->default_val("voxref-check-shader");
   sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
 
   return {sub, [o] { return runCheckShader(*o); }};

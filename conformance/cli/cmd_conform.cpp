@@ -1,5 +1,5 @@
-#include <memory>
 #include <iostream>
+#include <memory>
 
 #include "conformance/cli/case_selection.h"
 #include "conformance/cli/commands.h"
@@ -25,12 +25,12 @@ struct ConformOptions {
   bool runnerControls = false;
 };
 
-
 int runConform(const ConformOptions& o) {
   conf::RunOptions run;
   const auto driver = gpu::parseDriver(o.driver);
   if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "' (llvmpipe, softpipe or egl)");
-  if (o.inProcess && o.runnerControls) throw conf::UsageError("--in-process cannot run the runner's control cases: they end the process");
+  if (o.inProcess && o.runnerControls)
+    throw conf::UsageError("--in-process cannot run the runner's control cases: they end the process");
   if (o.timeout < 0) throw conf::UsageError("--timeout must be 0 (none) or a number of seconds");
   run.driver = *driver;
   run.filter = o.filter;
@@ -57,21 +57,26 @@ int runConform(const ConformOptions& o) {
 Subcommand addConformCommand(CLI::App& app, const std::string& invocation) {
   auto o = std::make_shared<ConformOptions>();
   o->command = invocation;
-  CLI::App* sub = app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
+  CLI::App* sub =
+      app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
   sub->add_option("--filter", o->filter, "shell-style glob on case ids")->default_val("*");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
   sub->add_option("--profile", o->profile, "auto or a precision profile name")->default_val("auto");
-  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")->default_val("voxref-report");
+  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
+      ->default_val("voxref-report");
   sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
   sub->add_flag("--all-images", o->allImages, "write images for every case, not only failing and warned ones");
   sub->add_option("--jobs,-j", o->jobs, "case processes at once; results do not depend on it")->default_val(1);
   sub->add_option("--shard", o->shard, "I/N: run only shard I of N of the selection (round robin, catalogue order)");
-  sub->add_option("--timeout", o->timeout, "seconds a case may take before it is killed and reported as timeout (0: none)")
+  sub->add_option("--timeout", o->timeout,
+                  "seconds a case may take before it is killed and reported as timeout (0: none)")
       ->default_val(300);
   sub->add_option("--baseline", o->baseline, "an earlier results.json: report changes; exit 3 when a case regressed");
-  sub->add_flag("--in-process", o->inProcess, "run cases in this process, without isolation or time limit (for a debugger)");
+  sub->add_flag("--in-process", o->inProcess,
+                "run cases in this process, without isolation or time limit (for a debugger)");
   sub->add_flag("--runner-controls", o->runnerControls,
-                       "add the runner's control cases (runner.control.*: deliberate driver crash, segfault, abort, exit, hang, exception)");
+                "add the runner's control cases (runner.control.*: deliberate driver crash, segfault, abort, exit, "
+                "hang, exception)");
 
   return {sub, [o] { return runConform(*o); }};
 }

@@ -1,12 +1,12 @@
 // voxref fixtures generate | verify: the Embree ground truth of the isosurface system
 // (conformance/modules/iso/iso_fixtures.h) for the built-in scenes or the user's own volume.
-#include <memory>
 #include <algorithm>
 #include <iostream>
+#include <memory>
 
 #include "conformance/cli/commands.h"
-#include "conformance/modules/iso/iso_fixtures.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/modules/iso/iso_fixtures.h"
 
 namespace voxref::cli {
 namespace {
@@ -14,8 +14,8 @@ namespace {
 struct FixturesOptions {
   bool generate = false;  // else verify
   std::filesystem::path dir;
-  std::string scene = "all";  // a built-in scene name, or all
-  std::optional<int> frames;  // none: the scene's own orbit length
+  std::string scene = "all";     // a built-in scene name, or all
+  std::optional<int> frames;     // none: the scene's own orbit length
   std::filesystem::path volume;  // the user's volume instead of a built-in scene
   std::vector<int> dims;
   std::string type = "uint8";
@@ -30,7 +30,8 @@ std::vector<conf::IsoScene> requestedScenes(const FixturesOptions& o) {
   if (!o.volume.empty()) {
     if (o.dims.size() != 3) throw conf::UsageError("--volume needs --dims X Y Z");
     if (!o.isovalue) throw conf::UsageError("--volume needs --isovalue");
-    if (o.type != "uint8" && o.type != "uint16") throw conf::UsageError("--type must be uint8 or uint16, not " + o.type);
+    if (o.type != "uint8" && o.type != "uint16")
+      throw conf::UsageError("--type must be uint8 or uint16, not " + o.type);
     conf::IsoScene s = conf::builtInIsoScenes().front();  // its camera and refinement settings
     s.name = o.volume.stem().string();
     s.volumeFile = std::filesystem::absolute(o.volume);
@@ -61,12 +62,14 @@ int runFixtures(const FixturesOptions& o) {
   auto progress = [](const std::string& what) { std::cerr << "  " << what << "\n"; };
   if (o.generate) {
     const nlohmann::json manifest = conf::generateIsoFixtures(o.dir, requestedScenes(o), o.threads, progress);
-    std::cout << "wrote " << manifest.at("files").size() << " fixture files and " << (o.dir / "manifest.json").string() << "\n";
+    std::cout << "wrote " << manifest.at("files").size() << " fixture files and " << (o.dir / "manifest.json").string()
+              << "\n";
     return 0;
   }
   const std::vector<conf::FixtureMismatch> problems = conf::verifyIsoFixtures(o.dir, o.threads, progress);
   for (const conf::FixtureMismatch& p : problems) std::cout << "MISMATCH " << p.file << ": " << p.problem << "\n";
-  std::cout << (problems.empty() ? "fixtures verified: every file regenerates bit for bit\n" : std::to_string(problems.size()) + " problem(s)\n");
+  std::cout << (problems.empty() ? "fixtures verified: every file regenerates bit for bit\n"
+                                 : std::to_string(problems.size()) + " problem(s)\n");
   return problems.empty() ? 0 : 1;
 }
 
@@ -74,13 +77,16 @@ int runFixtures(const FixturesOptions& o) {
 
 Subcommand addFixturesCommand(CLI::App& app) {
   auto o = std::make_shared<FixturesOptions>();
-  CLI::App* sub = app.add_subcommand("fixtures", "Embree ground truth of the isosurface scenes: generate, or verify bit for bit");
+  CLI::App* sub =
+      app.add_subcommand("fixtures", "Embree ground truth of the isosurface scenes: generate, or verify bit for bit");
   sub->require_subcommand(1);
   for (const bool generate : {true, false}) {
-    CLI::App* mode = sub->add_subcommand(generate ? "generate" : "verify", generate ? "write EXR fixtures and a manifest with sha256 of every file"
-                                                                                   : "regenerate from the manifest and compare every file");
+    CLI::App* mode = sub->add_subcommand(generate ? "generate" : "verify",
+                                         generate ? "write EXR fixtures and a manifest with sha256 of every file"
+                                                  : "regenerate from the manifest and compare every file");
     mode->add_option("--dir", o->dir, "fixture directory (holds manifest.json)")->required();
-    mode->add_option("--threads", o->threads, "CPU threads (0: all); results are the same for any count")->default_val(0);
+    mode->add_option("--threads", o->threads, "CPU threads (0: all); results are the same for any count")
+        ->default_val(0);
     if (!generate) continue;
     mode->callback([o] { o->generate = true; });
     mode->add_option("--scene", o->scene, "built-in scene (iso.frames.<scene>), or all")->default_val("all");
@@ -88,8 +94,10 @@ Subcommand addFixturesCommand(CLI::App& app) {
         ->check(CLI::Range(1, conf::kMaxIsoSceneFrames));  // the bound the manifest reader applies
     mode->add_option("--volume", o->volume, "your raw volume (.raw or .raw.gz) instead of a built-in scene");
     mode->add_option("--dims", o->dims, "X Y Z of --volume")->expected(3);
-    mode->add_option("--type", o->type, "voxel type of --volume: uint8 or uint16 (little endian)")->default_val("uint8");
-    mode->add_option("--isovalue", o->isovalue, "isovalue for --volume (or to override the scene's)")->check(finiteNumber());
+    mode->add_option("--type", o->type, "voxel type of --volume: uint8 or uint16 (little endian)")
+        ->default_val("uint8");
+    mode->add_option("--isovalue", o->isovalue, "isovalue for --volume (or to override the scene's)")
+        ->check(finiteNumber());
   }
   return {sub, [o] { return runFixtures(*o); }};
 }

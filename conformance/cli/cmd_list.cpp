@@ -1,11 +1,11 @@
-#include <memory>
 #include <iostream>
+#include <memory>
 
-#include "conformance/framework/selection.h"
-#include "conformance/modules/catalog.h"
 #include "conformance/cli/case_selection.h"
 #include "conformance/cli/commands.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/framework/selection.h"
+#include "conformance/modules/catalog.h"
 
 namespace voxref::cli {
 namespace {
@@ -15,7 +15,6 @@ struct ListOptions {
   std::string shard;  // "I/N" or empty
   bool runnerControls = false;
 };
-
 
 int runList(const ListOptions& o) {
   auto cases = conf::selectCases(catalogue(o.runnerControls), o.filter);
@@ -34,7 +33,8 @@ Subcommand addListCommand(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("list", "every case id with one line on what it checks");
   sub->add_option("--filter", o->filter, "shell-style glob on case ids")->default_val("*");
   sub->add_option("--shard", o->shard, "I/N: only the cases shard I of N runs (as conform --shard)");
-  sub->add_flag("--runner-controls", o->runnerControls, "also the runner's control cases (deliberate crash, abort, hang)");
+  sub->add_flag("--runner-controls", o->runnerControls,
+                "also the runner's control cases (deliberate crash, abort, hang)");
 
   return {sub, [o] { return runList(*o); }};
 }

@@ -1,14 +1,14 @@
 // `voxref probe`: render the probe frames, infer the driver's fingerprint from their bits alone,
 // hold it against the known profiles (docs/probe.md). GL_RENDERER is printed, never consulted.
-#include <memory>
 #include <iostream>
+#include <memory>
 
 #include "conformance/cli/commands.h"
 #include "conformance/framework/driver_info.h"
-#include "conformance/io/atomic_file.h"
+#include "conformance/framework/exit_status.h"
 #include "conformance/framework/probe/driver_fingerprint.h"
 #include "conformance/framework/probe/fingerprint_match.h"
-#include "conformance/framework/exit_status.h"
+#include "conformance/io/atomic_file.h"
 #include "gpu/gl_error.h"
 #include "gpu/probe_gl.h"
 
@@ -21,7 +21,6 @@ struct ProbeOptions {
   std::string driver = "llvmpipe";
   std::filesystem::path out;  // optional JSON report, written atomically
 };
-
 
 int runProbe(const ProbeOptions& o) {
   const auto driver = gpu::parseDriver(o.driver);
@@ -69,7 +68,8 @@ int runProbe(const ProbeOptions& o) {
 
 Subcommand addProbeCommand(CLI::App& app) {
   auto o = std::make_shared<ProbeOptions>();
-  CLI::App* sub = app.add_subcommand("probe", "infer the driver's precision from probe frames and match it to the known profiles");
+  CLI::App* sub =
+      app.add_subcommand("probe", "infer the driver's precision from probe frames and match it to the known profiles");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
   sub->add_option("--out", o->out, "also write the fingerprint as JSON");
 

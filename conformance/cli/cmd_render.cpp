@@ -1,22 +1,22 @@
-#include <memory>
 #include <fstream>
 #include <iostream>
+#include <memory>
 
-#include "conformance/modules/catalog.h"
 #include "conformance/cli/commands.h"
 #include "conformance/framework/driver_info.h"
+#include "conformance/framework/exit_status.h"
+#include "conformance/framework/progress.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/image_io.h"
-#include "conformance/framework/progress.h"
-#include "conformance/framework/exit_status.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/modules/sparsegrid/prepared_scene.h"
-#include "reference/timevarying/exact_colours.h"
 #include "conformance/modules/timevarying/timevarying_scene.h"
-#include "emulation/timevarying_emu.h"
-#include "gpu/timevarying_gl.h"
 #include "emulation/combination_emu.h"
+#include "emulation/timevarying_emu.h"
 #include "gpu/combination_gl.h"
+#include "gpu/timevarying_gl.h"
 #include "reference/common/framebuffer_codes.h"
+#include "reference/timevarying/exact_colours.h"
 
 namespace voxref::cli {
 namespace {
@@ -58,7 +58,8 @@ int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scen
   const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, tf, scene.encoding);
   const ref::PlaneFrame frame = conf::makeFrame(scene, tex.layout);
   const int step = conf::stepsOf(scene).front();
-  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()}, {"voxref.backend", o.backend},
+  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()},
+                                                {"voxref.backend", o.backend},
                                                 {"voxref.step", std::to_string(step)}};
   std::vector<std::array<double, 4>> rgba(static_cast<std::size_t>(frame.width) * frame.height, {0, 0, 0, 0});
   if (o.backend == "reference") {
@@ -90,7 +91,8 @@ int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scen
     channels[ch].data.resize(rgba.size());
     for (int j = 0; j < frame.height; ++j)
       for (int i = 0; i < frame.width; ++i)
-        channels[ch].data[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * (frame.height - 1 - j)] =
+        channels[ch]
+            .data[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * (frame.height - 1 - j)] =
             static_cast<float>(rgba[static_cast<std::size_t>(i) + static_cast<std::size_t>(frame.width) * j][ch]);
   }
   io::writeExr(o.out, frame.width, frame.height, channels, attributes);
@@ -103,7 +105,8 @@ int renderTimeVarying(const RenderOptions& o, const conf::TimeVaryingScene& scen
 int runRender(const RenderOptions& o) {
   if (o.out.extension() != ".exr") throw conf::UsageError("--out must name an .exr file, got " + o.out.string());
   const nlohmann::json json = loadScene(o.scene);
-  if (json.is_object() && json.contains("system") && json["system"] == "timevarying") {  // value() would throw for a non-string
+  if (json.is_object() && json.contains("system") &&
+      json["system"] == "timevarying") {  // value() would throw for a non-string
     try {
       return renderTimeVarying(o, conf::parseTimeVaryingScene(json));
     } catch (const conf::JsonFieldError& e) {
@@ -130,22 +133,23 @@ int runRender(const RenderOptions& o) {
   conf::Progress progress("voxref render (" + o.backend + ")", prepared.frame.planes);
   auto onPlane = [&](int done) { progress.update(done); };
   ref::SampleStack samples;
-  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()}, {"voxref.backend", o.backend}};
+  std::map<std::string, std::string> attributes{{"voxref.scene", conf::toJson(scene).dump()},
+                                                {"voxref.backend", o.backend}};
   if (o.backend == "reference") {
     samples = conf::referencePlanes(prepared, o.threads, onPlane);
   } else if (o.backend == "emulation") {
     const emu::PrecisionProfile* profile = emu::findProfile(o.profile);
     if (!profile) throw conf::UsageError("unknown profile '" + o.profile + "'");
-    const auto planes = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer, *profile,
-                                                {scene.flushEachPass, o.threads}, onPlane);
+    const auto planes = emu::emulateCombination(prepared.textures, prepared.frame, scene.sampler, scene.framebuffer,
+                                                *profile, {scene.flushEachPass, o.threads}, onPlane);
     samples = ref::toSampleStack(planes.planes, prepared.textures.readbackScale);
     attributes["voxref.profile"] = std::string(profile->name);
   } else if (o.backend == "gl") {
     const auto driver = gpu::parseDriver(o.driver);
     if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "'");
     const auto context = gpu::createContext(*driver);
-    const auto planes = gpu::renderCombinationGl(*context, prepared.textures, prepared.frame, scene.sampler, scene.framebuffer,
-                                                 {scene.flushEachPass}, onPlane);
+    const auto planes = gpu::renderCombinationGl(*context, prepared.textures, prepared.frame, scene.sampler,
+                                                 scene.framebuffer, {scene.flushEachPass}, onPlane);
     samples = ref::toSampleStack(planes, prepared.textures.readbackScale);
     attributes["voxref.renderer"] = context->info().renderer + " " + context->info().version;
   } else {

@@ -11,11 +11,11 @@
 #include <optional>
 
 #include "conformance/cli/codecs.h"
+#include "conformance/framework/exit_status.h"
 #include "conformance/framework/stopwatch.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/leb_file.h"
 #include "conformance/io/raw_volume.h"
-#include "conformance/framework/exit_status.h"
 #include "reference/common/byte_stream.h"
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/grid_field.h"
@@ -24,14 +24,14 @@
 namespace voxref::cli {
 namespace {
 
-
 // The bytes this process may still map under its address-space limit (ulimit -v, RLIMIT_AS), or
 // nothing when it has none.
 std::optional<std::uint64_t> addressSpaceLeft() {
   rlimit limit{};
   if (::getrlimit(RLIMIT_AS, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY) return std::nullopt;
   std::uint64_t mapped = 0;  // the first field of /proc/self/statm: the whole mapped size, in pages
-  if (std::ifstream statm("/proc/self/statm"); statm >> mapped) mapped *= static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  if (std::ifstream statm("/proc/self/statm"); statm >> mapped)
+    mapped *= static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
   const auto cap = static_cast<std::uint64_t>(limit.rlim_cur);
   return cap > mapped ? cap - mapped : 0;
 }
@@ -40,7 +40,8 @@ std::optional<std::uint64_t> addressSpaceLeft() {
 // may still map (ulimit -v); `what` names the file and the need ("F: decoding needs N bytes (...)").
 void refuseBeyondAddressSpace(std::uint64_t need, const std::string& what) {
   if (const std::optional<std::uint64_t> room = addressSpaceLeft(); room && need > *room)
-    throw io::IoError(what + ", more than the " + std::to_string(*room) + " bytes this process may still allocate (ulimit -v)");
+    throw io::IoError(what + ", more than the " + std::to_string(*room) +
+                      " bytes this process may still allocate (ulimit -v)");
 }
 
 std::string ratioText(double r) {
@@ -61,20 +62,24 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
   out << "\npages           " << st.pages << " of " << (1u << s.pageBits) << " points\n";
   for (const ref::LebChannelStats& c : st.channels) {
     const bool data = c.kind == ref::LebChannelKind::Data;
-    out << (data ? "data            " : "gradients       ") << c.rawBytes << " bytes raw -> " << c.compressedBytes() << " ("
-        << c.payloadBytes << " coded, " << c.descriptorBytes << " tables)" << (data ? " + " + std::to_string(st.headerBytes) + " header" : "")
-        << ", ratio " << ratioText(st.channelRatio(c.kind)) << "\n";
+    out << (data ? "data            " : "gradients       ") << c.rawBytes << " bytes raw -> " << c.compressedBytes()
+        << " (" << c.payloadBytes << " coded, " << c.descriptorBytes << " tables)"
+        << (data ? " + " + std::to_string(st.headerBytes) + " header" : "") << ", ratio "
+        << ratioText(st.channelRatio(c.kind)) << "\n";
   }
-  out << "stream          " << st.streamBytes << " bytes, ratio " << ratioText(st.ratio()) << " (raw bytes of the volume"
-      << (st.channels.size() > 1 ? " and its gradients" : "") << " over the stream)\n";
+  out << "stream          " << st.streamBytes << " bytes, ratio " << ratioText(st.ratio())
+      << " (raw bytes of the volume" << (st.channels.size() > 1 ? " and its gradients" : "") << " over the stream)\n";
 }
 
 }  // namespace
 
 int encodeLebCommand(const EncodeOptions& o) {
   if (o.out.extension() != ".vxleb") throw conf::UsageError("--out must name a .vxleb file, got " + o.out.string());
-  if (o.plume) throw conf::UsageError("--plume is for the timevarying codec; the leb codec encodes --input FILE --dims X Y Z");
-  if (o.inputs.size() != 1) throw conf::UsageError("the leb codec encodes one volume: give --input FILE once (got " + std::to_string(o.inputs.size()) + ")");
+  if (o.plume)
+    throw conf::UsageError("--plume is for the timevarying codec; the leb codec encodes --input FILE --dims X Y Z");
+  if (o.inputs.size() != 1)
+    throw conf::UsageError("the leb codec encodes one volume: give --input FILE once (got " +
+                           std::to_string(o.inputs.size()) + ")");
   if (o.dims.size() != 3) throw conf::UsageError("--dims needs three extents X Y Z");
   const auto type = io::parseVoxelType(o.type);
   if (!type) throw conf::UsageError("--type must be uint8 or uint16, got " + o.type);
@@ -92,14 +97,16 @@ int encodeLebCommand(const EncodeOptions& o) {
     throw conf::UsageError(e.what());
   }
   const ref::LebGrid grid = ref::lebGridCovering(dims);
-  if (!o.boundsOut.empty()) {  // diamond_bounds.h: 8 bytes per grid point, beside a copy of the volume and its (zero) gradients
+  if (!o.boundsOut.empty()) {  // diamond_bounds.h: 8 bytes per grid point, beside a copy of the volume and its (zero)
+                               // gradients
     const auto n = static_cast<std::uint64_t>(grid.pointsPerAxis());
     need += 16 * n * n * n + 5 * ref::sampleCount(dims);  // the bounds and their serialized copy
   }
-  const std::string needText = o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (the " +
-                               std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) + " that covers " + dimsText(dims) +
-                               ", at 2 bytes per point and component, its deltas and the volume" +
-                               (o.boundsOut.empty() ? "" : ", and 16 bytes per grid point for the diamond bounds and their file") + ")";
+  const std::string needText =
+      o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (the " +
+      std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) + " that covers " +
+      dimsText(dims) + ", at 2 bytes per point and component, its deltas and the volume" +
+      (o.boundsOut.empty() ? "" : ", and 16 bytes per grid point for the diamond bounds and their file") + ")";
   refuseBeyondAddressSpace(need, needText);
   ref::Volume<std::uint16_t> volume;
   int bits = 8;
@@ -146,10 +153,12 @@ int decodeLebCommand(const DecodeOptions& o) {
   // A small stream can describe a volume whose grid is large (the grid is the cube that covers
   // the volume): what decoding will allocate is known from the header and refused here, before
   // any of it is allocated, when it exceeds what this process may still map.
-  const std::uint64_t need = ref::lebDecodeMemoryBytes(s) + ref::sampleCount(s.dims) * static_cast<std::uint64_t>(s.sampleBits / 8);
+  const std::uint64_t need =
+      ref::lebDecodeMemoryBytes(s) + ref::sampleCount(s.dims) * static_cast<std::uint64_t>(s.sampleBits / 8);
   const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (the " +
-                               std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) + " that covers " +
-                               dimsText(s.dims) + ", at 2 bytes per point and component, plus the volume)";
+                               std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) +
+                               " that covers " + dimsText(s.dims) +
+                               ", at 2 bytes per point and component, plus the volume)";
   refuseBeyondAddressSpace(need, needText);
   ref::LebDecoded d;
   try {
@@ -172,9 +181,12 @@ int decodeLebCommand(const DecodeOptions& o) {
   }
   // The volume and its gradients are written together: a failure leaves neither.
   std::vector<io::FileContent> files{{o.out, raw}};
-  if (!o.gradientsOut.empty()) files.push_back({o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size())});
+  if (!o.gradientsOut.empty())
+    files.push_back(
+        {o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size())});
   io::writeFilesAtomically(files);
-  std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into " << o.out.string();
+  std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into "
+            << o.out.string();
   if (!o.gradientsOut.empty()) std::cout << " and their gradients (3 int8 per sample) into " << o.gradientsOut.string();
   std::cout << "\n";
   return 0;

@@ -26,22 +26,21 @@ struct EncodeOptions {
   std::string level = "auto";
   std::string encoding = "normalized_rgba8";
   std::string alphaOne = "refine";
-  int pageBits = 12;         // leb: 2^pageBits points per page
-  bool noGradients = false;  // leb: data channel only
+  int pageBits = 12;                // leb: 2^pageBits points per page
+  bool noGradients = false;         // leb: data channel only
   std::filesystem::path boundsOut;  // leb: also write the per-diamond bounds (reference/iso/BOUNDS_FORMAT.md)
   std::filesystem::path out;
 };
 struct DecodeOptions {
   std::string codec;
   std::filesystem::path input, out;
-  std::optional<int> step;  // timevarying; none: every step
+  std::optional<int> step;             // timevarying; none: every step
   std::filesystem::path gradientsOut;  // leb
 };
 struct InfoOptions {
   std::string codec;
   std::filesystem::path input;
 };
-
 
 int encodeTimeVaryingCommand(const EncodeOptions& o);
 int decodeTimeVaryingCommand(const DecodeOptions& o);
@@ -51,6 +50,8 @@ int encodeLebCommand(const EncodeOptions& o);
 int decodeLebCommand(const DecodeOptions& o);
 int infoLebCommand(const InfoOptions& o);
 
-inline std::string dimsText(const ref::Dims3& d) { return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]); }
+inline std::string dimsText(const ref::Dims3& d) {
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
 
 }  // namespace voxref::cli

@@ -16,7 +16,8 @@ CLI::Validator finiteNumber() {
         errno = 0;
         const double v = std::strtod(s.c_str(), &end);
         if (end == s.c_str() || *end != '\0') return "expected a number, got '" + s + "'";
-        if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0)) return "expected a finite number, got '" + s + "'";
+        if (!std::isfinite(v) || (errno == ERANGE && std::abs(v) > 1.0))
+          return "expected a finite number, got '" + s + "'";
         return std::string();
       },
       "FINITE");
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "voxref 0.1.0");
   const std::string invocation = joinArgs(argc, argv);
-  std::vector<Subcommand> subcommands{addListCommand(app), addConformCommand(app, invocation), addRenderCommand(app), addBenchCommand(app)};
+  std::vector<Subcommand> subcommands{addListCommand(app), addConformCommand(app, invocation), addRenderCommand(app),
+                                      addBenchCommand(app)};
   for (Subcommand& s : addCodecCommands(app)) subcommands.push_back(std::move(s));
   subcommands.push_back(addFixturesCommand(app));
   subcommands.push_back(addCheckShaderCommand(app, invocation));

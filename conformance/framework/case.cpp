@@ -4,23 +4,34 @@ namespace voxref::conf {
 
 std::string_view name(Status s) {
   switch (s) {
-    case Status::Pass: return "pass";
-    case Status::Warn: return "warn";
-    case Status::Fail: return "fail";
-    case Status::Skip: return "skip";
-    case Status::Crash: return "crash";
-    case Status::Timeout: return "timeout";
+    case Status::Pass:
+      return "pass";
+    case Status::Warn:
+      return "warn";
+    case Status::Fail:
+      return "fail";
+    case Status::Skip:
+      return "skip";
+    case Status::Crash:
+      return "crash";
+    case Status::Timeout:
+      return "timeout";
   }
   return "?";
 }
 
 std::string_view name(Verdict v) {
   switch (v) {
-    case Verdict::Pass: return "pass";
-    case Verdict::Warn: return "warn";
-    case Verdict::Fail: return "fail";
-    case Verdict::NotRun: return "not_run";
-    case Verdict::Info: return "info";
+    case Verdict::Pass:
+      return "pass";
+    case Verdict::Warn:
+      return "warn";
+    case Verdict::Fail:
+      return "fail";
+    case Verdict::NotRun:
+      return "not_run";
+    case Verdict::Info:
+      return "info";
   }
   return "?";
 }

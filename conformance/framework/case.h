@@ -61,12 +61,13 @@ struct CaseImages {  // paths relative to the report directory; empty when not w
 struct CaseResult {
   std::string id, system, description;
   Status status = Status::Pass;
-  std::string message;  // reason of a skip, crash or failure
+  std::string message;     // reason of a skip, crash or failure
   std::string stderrText;  // what the case's process wrote to stdout and stderr (kept for crashes and timeouts)
   std::vector<OracleResult> oracles;
   std::vector<std::string> effects;  // emulation/effects.h ids the emulator simulated
   std::vector<Finding> findings;
-  nlohmann::json figures = nlohmann::json::object();  // the case's own numbers (grids, passes ...): deterministic, compared between runs
+  nlohmann::json figures =
+      nlohmann::json::object();  // the case's own numbers (grids, passes ...): deterministic, compared between runs
   double secondsGl = 0.0, secondsEmulation = 0.0, secondsReference = 0.0;
   // Other wall-clock times the case measured (seconds): kept apart from the figures, which must be
   // equal bit for bit between equal runs; never compared between runs.

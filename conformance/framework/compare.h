@@ -18,11 +18,11 @@ namespace voxref::conf {
 std::uint64_t codeDistance(ref::FramebufferFormat format, std::uint32_t a, std::uint32_t b);
 
 struct CodeComparison {
-  std::size_t compared = 0;    // samples compared
-  std::size_t excluded = 0;    // samples left out by `exclude` (reported, never hidden)
-  std::size_t mismatched = 0;  // samples whose codes differ in any bit
-  std::uint64_t maxDistance = 0;  // largest codeDistance (LSB or ULP)
-  std::size_t firstMismatch = 0;  // index of the first differing sample (if any)
+  std::size_t compared = 0;        // samples compared
+  std::size_t excluded = 0;        // samples left out by `exclude` (reported, never hidden)
+  std::size_t mismatched = 0;      // samples whose codes differ in any bit
+  std::uint64_t maxDistance = 0;   // largest codeDistance (LSB or ULP)
+  std::size_t firstMismatch = 0;   // index of the first differing sample (if any)
   std::vector<std::uint8_t> mask;  // 1 where the codes differ
 };
 // Bit-for-bit comparison of two read-backs of the same format and size (std::invalid_argument

@@ -37,8 +37,8 @@ const emu::PrecisionProfile* chooseProfile(const std::string& choice, const gpu:
     const char* s = std::getenv(v);
     return std::string(s ? s : "");
   };
-  const emu::PrecisionProfile* p = emu::autoProfile(info.renderer, env("GALLIVM_PERF"), env("GALLIUM_OVERRIDE_CPU_CAPS"),
-                                                    detectCpuFlags().fma);
+  const emu::PrecisionProfile* p =
+      emu::autoProfile(info.renderer, env("GALLIVM_PERF"), env("GALLIUM_OVERRIDE_CPU_CAPS"), detectCpuFlags().fma);
   how = p ? "auto: GL_RENDERER '" + info.renderer + "', GALLIVM_PERF='" + env("GALLIVM_PERF") +
                 "', GALLIUM_OVERRIDE_CPU_CAPS='" + env("GALLIUM_OVERRIDE_CPU_CAPS") + "', CPU FMA " +
                 (detectCpuFlags().fma ? "yes" : "no")
@@ -59,9 +59,13 @@ nlohmann::json driverJson(const gpu::ContextInfo& info, const emu::PrecisionProf
       {"glsl_version", info.glslVersion},
       {"max_3d_texture_size", info.max3DTextureSize},
       {"environment", pins},
-      {"cpu_flags", {{"ssse3", cpu.ssse3}, {"sse4_1", cpu.sse4_1}, {"avx2", cpu.avx2}, {"fma", cpu.fma}, {"f16c", cpu.f16c}}},
+      {"cpu_flags",
+       {{"ssse3", cpu.ssse3}, {"sse4_1", cpu.sse4_1}, {"avx2", cpu.avx2}, {"fma", cpu.fma}, {"f16c", cpu.f16c}}},
   };
-  j["profile"] = profile ? nlohmann::json{{"name", profile->name}, {"summary", profile->summary}, {"environment", profile->environment}, {"chosen", how}}
+  j["profile"] = profile ? nlohmann::json{{"name", profile->name},
+                                          {"summary", profile->summary},
+                                          {"environment", profile->environment},
+                                          {"chosen", how}}
                          : nlohmann::json{{"name", nullptr}, {"chosen", how}};
   return j;
 }

@@ -71,8 +71,10 @@ class JsonObjectReader {
   static std::int64_t integerIn(const nlohmann::json& v, const std::string& path, std::int64_t lo, std::int64_t hi);
   // An integer within int's range (a JSON integer: not 2.0).
   static bool isInt(const nlohmann::json& v) {
-    if (v.is_number_unsigned()) return v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max());
-    return v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() && v.get<std::int64_t>() <= std::numeric_limits<int>::max();
+    if (v.is_number_unsigned())
+      return v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max());
+    return v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+           v.get<std::int64_t>() <= std::numeric_limits<int>::max();
   }
   template <class T>
   static std::string typeName() {

@@ -7,7 +7,10 @@
 namespace voxref::conf {
 
 Progress::Progress(std::string label, long total)
-    : label_(std::move(label)), total_(total), tty_(::isatty(STDERR_FILENO) != 0), start_(std::chrono::steady_clock::now()),
+    : label_(std::move(label)),
+      total_(total),
+      tty_(::isatty(STDERR_FILENO) != 0),
+      start_(std::chrono::steady_clock::now()),
       lastPrint_(start_) {}
 
 Progress::~Progress() { finish(); }

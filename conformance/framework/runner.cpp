@@ -1,5 +1,5 @@
-#include "conformance/framework/selection.h"
 #include "conformance/framework/runner.h"
+#include "conformance/framework/selection.h"
 
 #include <csignal>
 #include <cstring>
@@ -8,7 +8,6 @@
 
 #include "conformance/framework/case_context.h"
 #include "conformance/framework/driver_info.h"
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/isolation/child_processes.h"
 #include "conformance/framework/isolation/interrupt.h"
 #include "conformance/framework/progress.h"
@@ -16,6 +15,7 @@
 #include "conformance/framework/report/report_files.h"
 #include "conformance/framework/report/results_json.h"
 #include "conformance/framework/report/results_reader.h"
+#include "conformance/io/atomic_file.h"
 #include "gpu/gl_error.h"
 
 namespace voxref::conf {
@@ -46,7 +46,8 @@ nlohmann::json identifyHere(const RunOptions& options) {
 }
 
 Identity toIdentity(const nlohmann::json& j) {
-  return {j.at("driver"), j.at("profile").get<std::string>(), j.at("renderer").get<std::string>(), j.at("version").get<std::string>()};
+  return {j.at("driver"), j.at("profile").get<std::string>(), j.at("renderer").get<std::string>(),
+          j.at("version").get<std::string>()};
 }
 
 // Learns the identity in a child, so that the parent never holds a GL context (or its threads)
@@ -85,12 +86,14 @@ Identity identify(const RunOptions& options) {
 // The context a case runs with; the profile is chosen as identify() chose it.
 std::unique_ptr<CaseContext> makeCaseContext(const RunOptions& options, gpu::Context* gl) {
   std::string how;
-  return std::make_unique<CaseContext>(gl, chooseProfile(options.profile, gl->info(), how), options.outDir, options.threads,
-                                       options.allImages);
+  return std::make_unique<CaseContext>(gl, chooseProfile(options.profile, gl->info(), how), options.outDir,
+                                       options.threads, options.allImages);
 }
 
 // What a case's process wrote, as the report keeps it.
-std::string keptOutput(const isolation::ChildOutcome& o) { return (o.outputTruncated ? "[... earlier output dropped]\n" : "") + o.output; }
+std::string keptOutput(const isolation::ChildOutcome& o) {
+  return (o.outputTruncated ? "[... earlier output dropped]\n" : "") + o.output;
+}
 
 // The result of a case whose process did not hand one back.
 CaseResult lostCase(const Case& c, const isolation::ChildOutcome& o, double timeLimit) {
@@ -105,8 +108,8 @@ CaseResult lostCase(const Case& c, const isolation::ChildOutcome& o, double time
 }
 
 // The results so far in catalogue order, and the ids of the cases without one.
-void collect(const std::vector<std::optional<CaseResult>>& slots, const std::vector<Case>& cases, std::vector<CaseResult>& results,
-             std::vector<std::string>& notRun) {
+void collect(const std::vector<std::optional<CaseResult>>& slots, const std::vector<Case>& cases,
+             std::vector<CaseResult>& results, std::vector<std::string>& notRun) {
   results.clear();
   notRun.clear();
   for (std::size_t i = 0; i < cases.size(); ++i) {
@@ -162,13 +165,18 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
                    {"jobs", options.inProcess ? 1 : options.jobs},
                    {"time_limit_seconds", options.inProcess ? 0.0 : options.timeLimitSeconds},
                    {"selected", selected},
-                   {"shard", options.shard ? nlohmann::json{{"index", options.shard->index}, {"count", options.shard->count}, {"cases", cases.size()}}
+                   {"shard", options.shard ? nlohmann::json{{"index", options.shard->index},
+                                                            {"count", options.shard->count},
+                                                            {"cases", cases.size()}}
                                            : nlohmann::json(nullptr)}};
   out << "voxref conform: " << cases.size() << " case(s)";
-  if (options.shard) out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selected << ")";
-  out << " on " << identity.renderer << " (" << identity.version << ") through " << identity.driver.value("api", std::string("?")) << ", profile "
+  if (options.shard)
+    out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selected << ")";
+  out << " on " << identity.renderer << " (" << identity.version << ") through "
+      << identity.driver.value("api", std::string("?")) << ", profile "
       << (identity.profileName.empty() ? std::string("none: envelope oracle alone") : identity.profileName) << ", "
-      << (options.inProcess ? std::string("in this process") : std::to_string(options.jobs) + " process(es) at once") << std::endl;
+      << (options.inProcess ? std::string("in this process") : std::to_string(options.jobs) + " process(es) at once")
+      << std::endl;
   // What a rerun must set to get the same driver (gpu::environmentPins; all of it is in results.json).
   std::string set;
   const nlohmann::json environment = identity.driver.value("environment", nlohmann::json::object());
@@ -234,7 +242,10 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
           dirty = true;
           progress.update(++done, cases[i].id);
         });
-    if (!complete) run.interruptedBy = std::string("SIG") + (sigabbrev_np(isolation::interruptSignal()) ? sigabbrev_np(isolation::interruptSignal()) : "?");
+    if (!complete)
+      run.interruptedBy =
+          std::string("SIG") +
+          (sigabbrev_np(isolation::interruptSignal()) ? sigabbrev_np(isolation::interruptSignal()) : "?");
   }
   progress.finish();
 
@@ -253,17 +264,22 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   std::map<Status, int> counts;
   for (const CaseResult& r : outcome.results) ++counts[r.status];
   for (const CaseResult& r : outcome.results)
-    if (r.status == Status::Fail || r.status == Status::Crash || r.status == Status::Timeout || r.status == Status::Warn)
+    if (r.status == Status::Fail || r.status == Status::Crash || r.status == Status::Timeout ||
+        r.status == Status::Warn)
       out << "  " << name(r.status) << "  " << r.id << ": " << r.message << "\n";
   if (!options.baseline.empty()) printBaselineDiff(out, diff, options.baseline.string());
   if (!complete)
-    out << "INTERRUPTED by " << run.interruptedBy << ": partial report, " << outcome.results.size() << " of " << cases.size()
-        << " case(s) ran, " << run.notRun.size() << " not run\n";
+    out << "INTERRUPTED by " << run.interruptedBy << ": partial report, " << outcome.results.size() << " of "
+        << cases.size() << " case(s) ran, " << run.notRun.size() << " not run\n";
   out << "summary:";
-  for (Status s : {Status::Pass, Status::Warn, Status::Fail, Status::Skip, Status::Crash, Status::Timeout}) out << " " << counts[s] << " " << name(s);
+  for (Status s : {Status::Pass, Status::Warn, Status::Fail, Status::Skip, Status::Crash, Status::Timeout})
+    out << " " << counts[s] << " " << name(s);
   out << "\nreport: " << (options.outDir / "index.html").string() << " (results.json, junit.xml beside it)\n";
   const bool failed = counts[Status::Fail] + counts[Status::Crash] + counts[Status::Timeout] > 0;
-  outcome.exitCode = !complete ? 128 + isolation::interruptSignal() : diff.regressed() ? kExitRegressed : failed ? kExitFailed : kExitPass;
+  outcome.exitCode = !complete          ? 128 + isolation::interruptSignal()
+                     : diff.regressed() ? kExitRegressed
+                     : failed           ? kExitFailed
+                                        : kExitPass;
   return outcome;
 }
 

@@ -29,12 +29,12 @@ struct RunOptions {
   std::filesystem::path outDir = "voxref-report";
   int threads = 0;
   bool allImages = false;
-  std::string command;  // for the report
-  int jobs = 1;                       // case processes at once
-  std::optional<Shard> shard;         // run only this shard of the selection
-  double timeLimitSeconds = 300.0;    // per case; <= 0: none
-  bool inProcess = false;             // no isolation (for a debugger): a crash ends the run
-  std::filesystem::path baseline;     // an earlier results.json to compare with; empty: none
+  std::string command;              // for the report
+  int jobs = 1;                     // case processes at once
+  std::optional<Shard> shard;       // run only this shard of the selection
+  double timeLimitSeconds = 300.0;  // per case; <= 0: none
+  bool inProcess = false;           // no isolation (for a debugger): a crash ends the run
+  std::filesystem::path baseline;   // an earlier results.json to compare with; empty: none
 };
 
 struct RunOutcome {

@@ -25,10 +25,14 @@ std::filesystem::path resolved(const std::filesystem::path& p) {
 
 std::string kindText(std::filesystem::file_type t) {
   switch (t) {
-    case std::filesystem::file_type::directory: return "a directory";
-    case std::filesystem::file_type::block: return "a block device";
-    case std::filesystem::file_type::socket: return "a socket";
-    default: return "not a regular file";
+    case std::filesystem::file_type::directory:
+      return "a directory";
+    case std::filesystem::file_type::block:
+      return "a block device";
+    case std::filesystem::file_type::socket:
+      return "a socket";
+    default:
+      return "not a regular file";
   }
 }
 
@@ -65,11 +69,14 @@ OutputKind outputKind(const std::filesystem::path& destination) {
   const std::filesystem::file_status st = std::filesystem::status(destination, ec);
   switch (st.type()) {
     case std::filesystem::file_type::not_found:
-    case std::filesystem::file_type::regular: return OutputKind::Atomic;
+    case std::filesystem::file_type::regular:
+      return OutputKind::Atomic;
     case std::filesystem::file_type::character:
-    case std::filesystem::file_type::fifo: return OutputKind::Stream;
+    case std::filesystem::file_type::fifo:
+      return OutputKind::Stream;
     case std::filesystem::file_type::none:
-      if (ec && ec != std::errc::no_such_file_or_directory) throw IoError("cannot write " + destination.string() + ": " + ec.message());
+      if (ec && ec != std::errc::no_such_file_or_directory)
+        throw IoError("cannot write " + destination.string() + ": " + ec.message());
       return OutputKind::Atomic;
     default:
       throw IoError("cannot write " + destination.string() + ": it is " + kindText(st.type()) +
@@ -77,7 +84,8 @@ OutputKind outputKind(const std::filesystem::path& destination) {
   }
 }
 
-AtomicOutput::AtomicOutput(std::filesystem::path destination) : destination_(resolved(destination)), kind_(outputKind(destination_)) {
+AtomicOutput::AtomicOutput(std::filesystem::path destination)
+    : destination_(resolved(destination)), kind_(outputKind(destination_)) {
   const std::string stem = destination_.stem().string();
   const std::string ext = destination_.extension().string();
   if (kind_ == OutputKind::Stream) {
@@ -114,7 +122,9 @@ namespace {
 // Writes `content` to the temporary of `out`; errors name `path`, the destination.
 void writeTemporary(const AtomicOutput& out, const std::filesystem::path& path, std::string_view content) {
   std::FILE* f = std::fopen(out.temporary().c_str(), "wb");
-  if (!f) throw IoError("cannot write " + path.string() + ": cannot create " + out.temporary().string() + ": " + std::strerror(errno));
+  if (!f)
+    throw IoError("cannot write " + path.string() + ": cannot create " + out.temporary().string() + ": " +
+                  std::strerror(errno));
   writeAndClose(f, path, content, true);
 }
 

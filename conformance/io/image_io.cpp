@@ -20,10 +20,11 @@ void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
   std::vector<unsigned char> bytes;
   OIIO::Filesystem::IOVecOutput memory(bytes);
   auto file = OIIO::ImageOutput::create("png");
-  if (!file || !file->supports("ioproxy")) throw IoError("cannot write " + path.string() + ": OpenImageIO has no PNG writer to memory " + OIIO::geterror());
+  if (!file || !file->supports("ioproxy"))
+    throw IoError("cannot write " + path.string() + ": OpenImageIO has no PNG writer to memory " + OIIO::geterror());
   const OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-  if (!file->set_ioproxy(&memory) || !file->open(path.string(), spec) || !file->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) ||
-      !file->close())
+  if (!file->set_ioproxy(&memory) || !file->open(path.string(), spec) ||
+      !file->write_image(OIIO::TypeDesc::UINT8, image.rgb.data()) || !file->close())
     throw IoError("cannot encode " + path.string() + ": " + file->geterror());
   writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
@@ -41,13 +42,13 @@ void writeExr(const std::filesystem::path& path, int width, int height, const st
     for (const ExrChannel& c : channels) {
       if (!c.uintData.empty()) {
         header.channels().insert(c.name, Imf::Channel(Imf::UINT));
-        fb.insert(c.name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(const_cast<std::uint32_t*>(c.uintData.data())), sizeof(std::uint32_t),
-                                     sizeof(std::uint32_t) * static_cast<std::size_t>(width)));
+        fb.insert(c.name, Imf::Slice(Imf::UINT, reinterpret_cast<char*>(const_cast<std::uint32_t*>(c.uintData.data())),
+                                     sizeof(std::uint32_t), sizeof(std::uint32_t) * static_cast<std::size_t>(width)));
         continue;
       }
       header.channels().insert(c.name, Imf::Channel(Imf::FLOAT));
-      fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data.data())), sizeof(float),
-                                   sizeof(float) * static_cast<std::size_t>(width)));
+      fb.insert(c.name, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(c.data.data())),
+                                   sizeof(float), sizeof(float) * static_cast<std::size_t>(width)));
     }
     Imf::OutputFile file(out.temporary().c_str(), header);
     file.setFrameBuffer(fb);

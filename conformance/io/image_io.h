@@ -19,8 +19,8 @@ struct Rgb8Image {
 void writePng(const std::filesystem::path& path, const Rgb8Image& image);
 
 struct ExrChannel {
-  std::string name;         // e.g. "Y", "Z", "R"
-  std::vector<float> data;  // width * height, row 0 at the TOP
+  std::string name;                          // e.g. "Y", "Z", "R"
+  std::vector<float> data;                   // width * height, row 0 at the TOP
   std::vector<std::uint32_t> uintData = {};  // instead of data: a 32-bit UINT channel (ids)
 };
 

@@ -22,7 +22,9 @@ void grow(std::vector<unsigned char>& bytes, std::size_t total, std::size_t limi
   bytes.resize(std::min(total + std::clamp(total, kFirstChunk, kMaxChunk), limit));
 }
 
-[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) { throw IoError("volume file " + path.string() + " " + what); }
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw IoError("volume file " + path.string() + " " + what);
+}
 
 // All bytes of the file (decompressed when it starts with the gzip magic), refusing to read more
 // than `expected` + 1 so that a huge or endless stream is never held in memory. The buffer grows
@@ -96,18 +98,21 @@ std::vector<unsigned char> readBytes(const std::filesystem::path& path, std::siz
         std::string why = z.msg ? z.msg : "invalid gzip data";
         if (why == "incorrect data check") why += " (the CRC-32 in the gzip trailer does not match the data)";
         if (why == "incorrect length check") why += " (the length in the gzip trailer does not match the data)";
-        fail(path, "is corrupt at byte " + std::to_string(fileRead - z.avail_in) + " of its gzip stream, after " + std::to_string(total) +
-                       " bytes of data: " + why);
+        fail(path, "is corrupt at byte " + std::to_string(fileRead - z.avail_in) + " of its gzip stream, after " +
+                       std::to_string(total) + " bytes of data: " + why);
       }
     }
     if (total < limit && !ended)
-      fail(path, "is a truncated gzip stream: the file ends after " + std::to_string(total) +
-                     " bytes of data, before the gzip trailer (CRC-32 and length) that ends the stream; the dimensions need " +
-                     std::to_string(expected));
+      fail(
+          path,
+          "is a truncated gzip stream: the file ends after " + std::to_string(total) +
+              " bytes of data, before the gzip trailer (CRC-32 and length) that ends the stream; the dimensions need " +
+              std::to_string(expected));
   }
   if (total != expected)
-    fail(path, "holds " + std::string(total > expected ? "more than " : "") + std::to_string(total > expected ? expected : total) +
-                   " bytes; the dimensions need " + std::to_string(expected));
+    fail(path, "holds " + std::string(total > expected ? "more than " : "") +
+                   std::to_string(total > expected ? expected : total) + " bytes; the dimensions need " +
+                   std::to_string(expected));
   bytes.resize(total);
   return bytes;
 }

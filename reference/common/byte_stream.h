@@ -29,7 +29,8 @@ class ByteWriter {
   void bytes(std::string_view s) { out_.append(s); }
   template <class T>
   void le(T v) {
-    for (std::size_t i = 0; i < sizeof(T); ++i) out_.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * i)) & 0xff));
+    for (std::size_t i = 0; i < sizeof(T); ++i)
+      out_.push_back(static_cast<char>((static_cast<std::uint64_t>(v) >> (8 * i)) & 0xff));
   }
   std::size_t size() const { return out_.size(); }
   std::string& str() { return out_; }
@@ -64,7 +65,8 @@ class ByteReader {
     const std::size_t at = at_;
     const T v = le<T>(field);
     if (static_cast<std::uint64_t>(v) < lo || static_cast<std::uint64_t>(v) > hi)
-      fail(at, std::string(field) + ": expected " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " + std::to_string(static_cast<std::uint64_t>(v)));
+      fail(at, std::string(field) + ": expected " + std::to_string(lo) + ".." + std::to_string(hi) + ", got " +
+                   std::to_string(static_cast<std::uint64_t>(v)));
     return v;
   }
   std::string_view take(std::size_t n, const char* field) {
@@ -75,7 +77,8 @@ class ByteReader {
   }
   void need(std::size_t n, const char* field) const {
     if (b_.size() - at_ < n)
-      fail(at_, std::string(field) + ": expected " + std::to_string(n) + " bytes, the stream ends after " + std::to_string(b_.size() - at_));
+      fail(at_, std::string(field) + ": expected " + std::to_string(n) + " bytes, the stream ends after " +
+                    std::to_string(b_.size() - at_));
   }
 
  private:

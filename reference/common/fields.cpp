@@ -33,7 +33,8 @@ double gaussianBlobs(double x, double y, double z) {
 // radii. |psi| peaks at r = 6 on the z axis, where r^2 e^{-r/3} (3 - 1) = 72 e^-2.
 double hydrogenOrbital(double x, double y, double z) {
   constexpr double kHalfExtent = 20.0;
-  const double px = (2.0 * x - 1.0) * kHalfExtent, py = (2.0 * y - 1.0) * kHalfExtent, pz = (2.0 * z - 1.0) * kHalfExtent;
+  const double px = (2.0 * x - 1.0) * kHalfExtent, py = (2.0 * y - 1.0) * kHalfExtent,
+               pz = (2.0 * z - 1.0) * kHalfExtent;
   const double r2 = px * px + py * py + pz * pz;
   const double r = std::sqrt(r2);
   const double angular = r2 > 0.0 ? 3.0 * pz * pz / r2 - 1.0 : 0.0;
@@ -44,7 +45,8 @@ double hydrogenOrbital(double x, double y, double z) {
 double tentProduct(double x, double y, double z) { return 64.0 * (x * (1.0 - x)) * (y * (1.0 - y)) * (z * (1.0 - z)); }
 
 double figure9(double x, double y, double z) {
-  const bool a = x == 0.25 && y == 0.5 && z == 0.5, b = x == 0.5 && y == 0.25 && z == 0.5, c = x == 0.5 && y == 0.5 && z == 0.25;
+  const bool a = x == 0.25 && y == 0.5 && z == 0.5, b = x == 0.5 && y == 0.25 && z == 0.5,
+             c = x == 0.5 && y == 0.5 && z == 0.25;
   return a || b || c ? 0.0 : 0.8;
 }
 
@@ -95,8 +97,18 @@ double ridge(double x, double y, double z) {
 }  // namespace
 
 std::vector<std::string> analyticFieldNames() {
-  return {"gaussian_blobs", "hydrogen_orbital", "tent_product", "constant_one", "zero", "ridge", "figure9", "gaussian_buckyball",
-          "blobs_near_flt_max", "blobs_denormal", "blobs_near_half_max", "blobs_half_denormal"};
+  return {"gaussian_blobs",
+          "hydrogen_orbital",
+          "tent_product",
+          "constant_one",
+          "zero",
+          "ridge",
+          "figure9",
+          "gaussian_buckyball",
+          "blobs_near_flt_max",
+          "blobs_denormal",
+          "blobs_near_half_max",
+          "blobs_half_denormal"};
 }
 
 Field analyticField(std::string_view name) {
@@ -111,10 +123,14 @@ Field analyticField(std::string_view name) {
   // Float-texture traps (issue 7): the blobs scaled by powers of two, so every value keeps its
   // significand. 2^126: a quarter of FLT_MAX at the peak, sums of passes stay finite; 2^-140:
   // every value (and every texel, after the 1/n+ scaling) is a float32 denormal.
-  if (name == "blobs_near_flt_max") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), 126); }};
-  if (name == "blobs_near_half_max") return {std::string(name), [](double x, double y, double z) { return 65000.0 * gaussianBlobs(x, y, z); }};
-  if (name == "blobs_half_denormal") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -15); }};
-  if (name == "blobs_denormal") return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -140); }};
+  if (name == "blobs_near_flt_max")
+    return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), 126); }};
+  if (name == "blobs_near_half_max")
+    return {std::string(name), [](double x, double y, double z) { return 65000.0 * gaussianBlobs(x, y, z); }};
+  if (name == "blobs_half_denormal")
+    return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -15); }};
+  if (name == "blobs_denormal")
+    return {std::string(name), [](double x, double y, double z) { return std::ldexp(gaussianBlobs(x, y, z), -140); }};
   std::string known;
   for (const auto& n : analyticFieldNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown analytic field '" + std::string(name) + "' (known: " + known + ")");
@@ -133,7 +149,9 @@ Field volumeField(std::string name, std::shared_ptr<const Volume<std::uint8_t>> 
       i0[a] = std::min(static_cast<int>(std::floor(t)), d[a] - 2);
       w[a] = t - i0[a];
     }
-    auto v = [&](int dx, int dy, int dz) { return static_cast<double>(volume->at(i0[0] + dx, i0[1] + dy, i0[2] + dz)); };
+    auto v = [&](int dx, int dy, int dz) {
+      return static_cast<double>(volume->at(i0[0] + dx, i0[1] + dy, i0[2] + dz));
+    };
     auto lerp = [](double a, double b, double t) { return (1.0 - t) * a + t * b; };
     const double c00 = lerp(v(0, 0, 0), v(1, 0, 0), w[0]), c10 = lerp(v(0, 1, 0), v(1, 1, 0), w[0]);
     const double c01 = lerp(v(0, 0, 1), v(1, 0, 1), w[0]), c11 = lerp(v(0, 1, 1), v(1, 1, 1), w[0]);

@@ -10,9 +10,12 @@ double decodeFramebufferCode(FramebufferFormat format, std::uint32_t code) {
   switch (format) {
     case FramebufferFormat::RGBA8:
     case FramebufferFormat::RGBA12:
-    case FramebufferFormat::RGBA16: return unormToDouble(code, unormBits(format));
-    case FramebufferFormat::RGBA16F: return halfToDouble(static_cast<std::uint16_t>(code));
-    case FramebufferFormat::RGBA32F: return std::bit_cast<float>(code);
+    case FramebufferFormat::RGBA16:
+      return unormToDouble(code, unormBits(format));
+    case FramebufferFormat::RGBA16F:
+      return halfToDouble(static_cast<std::uint16_t>(code));
+    case FramebufferFormat::RGBA32F:
+      return std::bit_cast<float>(code);
   }
   return 0.0;
 }

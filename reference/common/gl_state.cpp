@@ -63,11 +63,15 @@ std::optional<Wrap> parseWrap(std::string_view s) { return lookup(kWraps, s); }
 
 int unormBits(FramebufferFormat f) {
   switch (f) {
-    case FramebufferFormat::RGBA8: return 8;
-    case FramebufferFormat::RGBA12: return 12;
-    case FramebufferFormat::RGBA16: return 16;
+    case FramebufferFormat::RGBA8:
+      return 8;
+    case FramebufferFormat::RGBA12:
+      return 12;
+    case FramebufferFormat::RGBA16:
+      return 16;
     case FramebufferFormat::RGBA16F:
-    case FramebufferFormat::RGBA32F: return 0;
+    case FramebufferFormat::RGBA32F:
+      return 0;
   }
   return 0;
 }

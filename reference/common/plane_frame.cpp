@@ -46,8 +46,10 @@ std::string enumeratedViolation(const PlaneFrame& f) {
       const glm::dvec3 c = (j + 0.5) * f.dy;
       for (int i = 0; i < f.width; ++i) {
         const glm::dvec3 b = (i + 0.5) * f.dx;
-        if (!isFloat32(b) || !isFloat32(c) || !isFloat32(a + b) || !isFloat32(a + c) || !isFloat32(b + c) || !isFloat32(f.sample(i, j, k)))
-          return "sample (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + ") or a partial sum of it is not a float32";
+        if (!isFloat32(b) || !isFloat32(c) || !isFloat32(a + b) || !isFloat32(a + c) || !isFloat32(b + c) ||
+            !isFloat32(f.sample(i, j, k)))
+          return "sample (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) +
+                 ") or a partial sum of it is not a float32";
       }
     }
   }
@@ -60,10 +62,14 @@ constexpr long kMaxEnumeratedSamples = 1L << 20;
 
 std::string float32ExactnessViolation(const PlaneFrame& f) {
   std::string lattice;
-  if (!onLattice(f.dx, kStepLatticeBits)) lattice = "dx is not a multiple of 2^-21";
-  else if (!onLattice(f.dy, kStepLatticeBits)) lattice = "dy is not a multiple of 2^-21";
-  else if (!onLattice(f.dz, kStepLatticeBits)) lattice = "dz is not a multiple of 2^-21";
-  else if (!onLattice(f.origin, kOriginLatticeBits)) lattice = "origin is not a multiple of 2^-22";
+  if (!onLattice(f.dx, kStepLatticeBits))
+    lattice = "dx is not a multiple of 2^-21";
+  else if (!onLattice(f.dy, kStepLatticeBits))
+    lattice = "dy is not a multiple of 2^-21";
+  else if (!onLattice(f.dz, kStepLatticeBits))
+    lattice = "dz is not a multiple of 2^-21";
+  else if (!onLattice(f.origin, kOriginLatticeBits))
+    lattice = "origin is not a multiple of 2^-22";
   if (!lattice.empty()) {
     const long samples = static_cast<long>(f.width) * f.height * f.planes;
     if (samples > kMaxEnumeratedSamples) return lattice + " (and the frame has too many samples to check one by one)";
@@ -77,8 +83,8 @@ std::string float32ExactnessViolation(const PlaneFrame& f) {
       for (int ck = 0; ck < 2; ++ck) {
         const int i = ci ? f.width - 1 : 0, j = cj ? f.height - 1 : 0, k = ck ? f.planes - 1 : 0;
         const glm::dvec3 o = f.planeOrigin(k);
-        worst = std::max({worst, maxAbs(o), maxAbs((i + 0.5) * f.dx), maxAbs((j + 0.5) * f.dy), maxAbs(o + (i + 0.5) * f.dx),
-                          maxAbs(f.sample(i, j, k))});
+        worst = std::max({worst, maxAbs(o), maxAbs((i + 0.5) * f.dx), maxAbs((j + 0.5) * f.dy),
+                          maxAbs(o + (i + 0.5) * f.dx), maxAbs(f.sample(i, j, k))});
       }
   if (!(worst < kMagnitudeBound)) return "a sample coordinate or partial sum reaches magnitude 4";
   return {};
@@ -108,7 +114,8 @@ PlaneFrame orbitFrame(double azimuthDeg, double elevationDeg, int width, int hei
   f.dy = snap(up * (kViewBoxSide / height), kStepLatticeBits);
   f.dz = snap(view * (kViewBoxSide / planes), kStepLatticeBits);
   const glm::dvec3 centre{0.5, 0.5, 0.5};
-  f.origin = snap(centre - 0.5 * (double(width) * f.dx + double(height) * f.dy + double(planes) * f.dz), kOriginLatticeBits);
+  f.origin =
+      snap(centre - 0.5 * (double(width) * f.dx + double(height) * f.dy + double(planes) * f.dz), kOriginLatticeBits);
   if (const std::string why = float32ExactnessViolation(f); !why.empty())
     throw std::logic_error("orbitFrame built a frame that is not float32-exact: " + why);
   return f;
@@ -116,8 +123,8 @@ PlaneFrame orbitFrame(double azimuthDeg, double elevationDeg, int width, int hei
 
 PlaneFrame straddlingFrame(double offset, double spacing, int faces, glm::dvec3 rowStep, int rows, glm::dvec3 first) {
   const double u = std::ldexp(1.0, -24);
-  return explicitFrame({offset - spacing / 2 - 2 * u, first.y - rowStep.y / 2, first.z - rowStep.z / 2}, {2 * u, 0, 0}, {spacing, 0, 0},
-                       {0, rowStep.y, rowStep.z}, 2, faces, rows);
+  return explicitFrame({offset - spacing / 2 - 2 * u, first.y - rowStep.y / 2, first.z - rowStep.z / 2}, {2 * u, 0, 0},
+                       {spacing, 0, 0}, {0, rowStep.y, rowStep.z}, 2, faces, rows);
 }
 
 }  // namespace voxref::ref

@@ -10,9 +10,12 @@ namespace voxref::ref {
 
 std::string_view name(RenderMode m) {
   switch (m) {
-    case RenderMode::XRay: return "xray";
-    case RenderMode::Mip: return "mip";
-    case RenderMode::Iso: return "iso";
+    case RenderMode::XRay:
+      return "xray";
+    case RenderMode::Mip:
+      return "mip";
+    case RenderMode::Iso:
+      return "iso";
   }
   return "?";
 }
@@ -84,7 +87,9 @@ Image shadePlanes(const SampleStack& s, const PlaneFrame& f, const ShadingParams
         case RenderMode::Mip:
           for (int k = 0; k < f.planes; ++k) v = std::max(v, s.at(i, j, k));
           break;
-        case RenderMode::Iso: v = shadeIso(s, f, p, i, j); break;
+        case RenderMode::Iso:
+          v = shadeIso(s, f, p, i, j);
+          break;
       }
       img.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(f.width) * j] = v;
     }

@@ -24,7 +24,8 @@ struct SampleStack {
   int width = 0, height = 0, planes = 0;
   std::vector<double> values;
   double at(int i, int j, int k) const {
-    return values[static_cast<std::size_t>(i) + static_cast<std::size_t>(width) * (j + static_cast<std::size_t>(height) * k)];
+    return values[static_cast<std::size_t>(i) +
+                  static_cast<std::size_t>(width) * (j + static_cast<std::size_t>(height) * k)];
   }
 };
 

@@ -39,16 +39,29 @@ ProbeDesign makeDesign() {
   constexpr int width = 128, height = ProbeDesign::kSamplesPerTexel / width + 1;  // 2^14 + 1 samples and a few more
   // Sample k sits k * 2^-14 texel past the first texel centre (u = 0.25 on a 2-texel texture).
   const float step2 = std::ldexp(1.0f, -15);
-  d.sweeps.push_back({"sweep.rgba8", true, Wrap::ClampToEdge, 2, {{0, 255, 10, 200}, {255, 0, 201, 3}}, 0.25f, step2, width, height});
+  d.sweeps.push_back(
+      {"sweep.rgba8", true, Wrap::ClampToEdge, 2, {{0, 255, 10, 200}, {255, 0, 201, 3}}, 0.25f, step2, width, height});
   const float denormLo = std::ldexp(1.0f, -140), denormHi = std::ldexp(1.0f, -130);
-  d.sweeps.push_back({"sweep.rgba32f", false, Wrap::ClampToEdge, 2,
+  d.sweeps.push_back({"sweep.rgba32f",
+                      false,
+                      Wrap::ClampToEdge,
+                      2,
                       {{bitsOf(0.0f), bitsOf(0.1f), bitsOf(denormLo), bitsOf(0.7f)},
                        {bitsOf(1.0f), bitsOf(1.7f), bitsOf(denormHi), bitsOf(-1.3f)}},
-                      0.25f, step2, width, height});
+                      0.25f,
+                      step2,
+                      width,
+                      height});
   // fract(u) = 0.25 + k 2^-21: between texel 0 and texel 1 of 3 for every sample of the target.
-  d.sweeps.push_back({"sweep.repeat_npot", false, Wrap::Repeat, 3,
+  d.sweeps.push_back({"sweep.repeat_npot",
+                      false,
+                      Wrap::Repeat,
+                      3,
                       {{bitsOf(0.0f), 0, 0, 0}, {bitsOf(1.0f), 0, 0, 0}, {bitsOf(0.0f), 0, 0, 0}},
-                      7.25f, std::ldexp(1.0f, -21), width, height});
+                      7.25f,
+                      std::ldexp(1.0f, -21),
+                      width,
+                      height});
 
   d.writes.push_back(packed("store.rgba8", FramebufferFormat::RGBA8, 1, halfwayValues(8, 1)));
   d.writes.push_back(packed("store.rgba16", FramebufferFormat::RGBA16, 1, halfwayValues(16, 37)));

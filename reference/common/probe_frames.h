@@ -29,7 +29,7 @@ struct ProbeSweep {
   int texels = 2;
   std::vector<std::array<std::uint32_t, 4>> texelCodes;  // RGBA per texel along x
   float uOrigin = 0.0f, uStep = 0.0f;
-  int width = 0, height = 0;  // RGBA32F target; one sample per pixel
+  int width = 0, height = 0;                                                // RGBA32F target; one sample per pixel
   float u(int k) const { return uOrigin + static_cast<float>(k) * uStep; }  // exact (see above)
 };
 

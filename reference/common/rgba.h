@@ -16,7 +16,8 @@ struct RgbaStack {
   int width = 0, height = 0, planes = 0;
   std::vector<Rgba8> colours;
   const Rgba8& at(int i, int j, int k) const {
-    return colours[static_cast<std::size_t>(i) + static_cast<std::size_t>(width) * (j + static_cast<std::size_t>(height) * k)];
+    return colours[static_cast<std::size_t>(i) +
+                   static_cast<std::size_t>(width) * (j + static_cast<std::size_t>(height) * k)];
   }
 };
 

@@ -36,9 +36,7 @@ std::uint32_t unormFromDouble(double x, int bits) {
   return static_cast<std::uint32_t>(r);
 }
 
-double unormToDouble(std::uint32_t code, int bits) {
-  return static_cast<double>(code) / (std::ldexp(1.0, bits) - 1.0);
-}
+double unormToDouble(std::uint32_t code, int bits) { return static_cast<double>(code) / (std::ldexp(1.0, bits) - 1.0); }
 
 std::uint16_t halfFromDouble(double x) {
   const std::uint16_t sign = std::signbit(x) ? 0x8000u : 0u;
@@ -68,7 +66,8 @@ double halfToDouble(std::uint16_t h) {
   const int exp = (h >> 10) & 0x1f;
   const int mant = h & 0x3ff;
   if (exp == 0) return sign * std::ldexp(static_cast<double>(mant), -24);
-  if (exp == 31) return mant ? std::numeric_limits<double>::quiet_NaN() : sign * std::numeric_limits<double>::infinity();
+  if (exp == 31)
+    return mant ? std::numeric_limits<double>::quiet_NaN() : sign * std::numeric_limits<double>::infinity();
   return sign * std::ldexp(static_cast<double>(mant + 1024), exp - 25);
 }
 

@@ -9,10 +9,14 @@ namespace voxref::ref {
 std::uint32_t encodeTexel(TexelFormat format, double value) {
   switch (format) {
     case TexelFormat::R8:
-    case TexelFormat::RGBA8: return unormFromDouble(value, 8);
-    case TexelFormat::R16: return unormFromDouble(value, 16);
-    case TexelFormat::R16F: return halfFromDouble(value);
-    case TexelFormat::R32F: return std::bit_cast<std::uint32_t>(static_cast<float>(value));
+    case TexelFormat::RGBA8:
+      return unormFromDouble(value, 8);
+    case TexelFormat::R16:
+      return unormFromDouble(value, 16);
+    case TexelFormat::R16F:
+      return halfFromDouble(value);
+    case TexelFormat::R32F:
+      return std::bit_cast<std::uint32_t>(static_cast<float>(value));
   }
   return 0;
 }
@@ -20,21 +24,29 @@ std::uint32_t encodeTexel(TexelFormat format, double value) {
 double decodeTexel(TexelFormat format, std::uint32_t code) {
   switch (format) {
     case TexelFormat::R8:
-    case TexelFormat::RGBA8: return unormToDouble(code, 8);
-    case TexelFormat::R16: return unormToDouble(code, 16);
-    case TexelFormat::R16F: return halfToDouble(static_cast<std::uint16_t>(code));
-    case TexelFormat::R32F: return std::bit_cast<float>(code);
+    case TexelFormat::RGBA8:
+      return unormToDouble(code, 8);
+    case TexelFormat::R16:
+      return unormToDouble(code, 16);
+    case TexelFormat::R16F:
+      return halfToDouble(static_cast<std::uint16_t>(code));
+    case TexelFormat::R32F:
+      return std::bit_cast<float>(code);
   }
   return 0.0;
 }
 
 int bytesPerTexel(TexelFormat format) {
   switch (format) {
-    case TexelFormat::R8: return 1;
-    case TexelFormat::RGBA8: return 4;
+    case TexelFormat::R8:
+      return 1;
+    case TexelFormat::RGBA8:
+      return 4;
     case TexelFormat::R16:
-    case TexelFormat::R16F: return 2;
-    case TexelFormat::R32F: return 4;
+    case TexelFormat::R16F:
+      return 2;
+    case TexelFormat::R32F:
+      return 4;
   }
   return 0;
 }
@@ -42,10 +54,13 @@ int bytesPerTexel(TexelFormat format) {
 int unormBits(TexelFormat format) {
   switch (format) {
     case TexelFormat::R8:
-    case TexelFormat::RGBA8: return 8;
-    case TexelFormat::R16: return 16;
+    case TexelFormat::RGBA8:
+      return 8;
+    case TexelFormat::R16:
+      return 16;
     case TexelFormat::R16F:
-    case TexelFormat::R32F: return 0;
+    case TexelFormat::R32F:
+      return 0;
   }
   return 0;
 }

@@ -15,14 +15,16 @@ double radians(double degrees) { return degrees * kPi / 180.0; }
 
 CameraBasis cameraBasis(const ViewCamera& c) {
   if (c.width <= 0 || c.height <= 0) throw std::invalid_argument("camera: width and height must be positive");
-  if (!(c.fovYDegrees > 0.0 && c.fovYDegrees < 180.0)) throw std::invalid_argument("camera: fov_y must be in (0, 180) degrees");
+  if (!(c.fovYDegrees > 0.0 && c.fovYDegrees < 180.0))
+    throw std::invalid_argument("camera: fov_y must be in (0, 180) degrees");
   if (!(c.nearPlane > 0.0 && c.nearPlane < c.farPlane)) throw std::invalid_argument("camera: need 0 < near < far");
   const glm::dvec3 view = c.target - c.eye;
   if (glm::length(view) == 0.0) throw std::invalid_argument("camera: eye and target coincide");
   CameraBasis b;
   b.forward = glm::normalize(view);
   const glm::dvec3 r = glm::cross(b.forward, c.up);
-  if (glm::length(r) < 1e-12 * glm::length(c.up)) throw std::invalid_argument("camera: up is parallel to the view direction");
+  if (glm::length(r) < 1e-12 * glm::length(c.up))
+    throw std::invalid_argument("camera: up is parallel to the view direction");
   b.right = glm::normalize(r);
   b.up = glm::cross(b.right, b.forward);
   return b;
@@ -65,7 +67,8 @@ ViewCamera orbitCamera(const OrbitPath& path, int frame, const ViewCamera& base)
   const double el = radians(path.elevationDegrees);
   ViewCamera c = base;
   c.target = path.center;
-  c.eye = path.center + path.radius * glm::dvec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+  c.eye =
+      path.center + path.radius * glm::dvec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
   c.up = {0.0, 1.0, 0.0};
   return c;
 }

@@ -77,7 +77,8 @@ std::string serializeDiamondBounds(const DiamondBounds& b) {
 
 DiamondBounds parseDiamondBounds(std::string_view bytes) {
   ByteReader r(bytes);
-  if (r.take(4, "magic") != std::string_view(kBoundsMagic, 4)) ByteReader::fail(0, "magic: expected 'VXLD' (not diamond bounds)");
+  if (r.take(4, "magic") != std::string_view(kBoundsMagic, 4))
+    ByteReader::fail(0, "magic: expected 'VXLD' (not diamond bounds)");
   r.le<std::uint16_t>("version", kBoundsVersion, kBoundsVersion);
   DiamondBounds b;
   b.grid = makeLebGrid(r.le<std::uint8_t>("k", 0, kMaxLebK));
@@ -86,7 +87,8 @@ DiamondBounds parseDiamondBounds(std::string_view bytes) {
   const std::uint64_t expected = kBoundsHeader + 8 * n + 4;
   if (bytes.size() != expected)
     ByteReader::fail(bytes.size() < expected ? bytes.size() : expected,
-                     "size: a grid of " + std::to_string(n) + " points needs " + std::to_string(expected) + " bytes, the stream has " + std::to_string(bytes.size()));
+                     "size: a grid of " + std::to_string(n) + " points needs " + std::to_string(expected) +
+                         " bytes, the stream has " + std::to_string(bytes.size()));
   if (!crc32Matches(bytes.substr(0, expected - 4), static_cast<std::uint32_t>(loadLe(bytes.data() + expected - 4, 4))))
     ByteReader::fail(expected - 4, "crc32: the bounds are corrupt");
   b.min.resize(n);

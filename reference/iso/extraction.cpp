@@ -6,10 +6,12 @@
 
 namespace voxref::ref {
 
-IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondBounds* bounds, double isovalue, ExtractionStats* stats) {
+IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondBounds* bounds, double isovalue,
+                          ExtractionStats* stats) {
   const LebGrid& grid = mesh.grid();
   if (field.grid().k != grid.k) throw std::invalid_argument("extraction: the field's grid and the mesh's grid differ");
-  if (bounds != nullptr && bounds->grid.k != grid.k) throw std::invalid_argument("extraction: the bounds' grid and the mesh's grid differ");
+  if (bounds != nullptr && bounds->grid.k != grid.k)
+    throw std::invalid_argument("extraction: the bounds' grid and the mesh's grid differ");
   const Dims3& dims = field.volumeDims();
   IsoMeshBuilder builder(grid, isovalue, {dims[0] - 1, dims[1] - 1, dims[2] - 1});
   const HzOrder order(grid);
@@ -20,7 +22,8 @@ IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const Diamo
     if (bounds != nullptr && hasDiamond && !bounds->mayContain(diamond, isovalue)) return;
     ++s.tetrahedraRead;
     std::array<TetCorner, 4> corners;
-    for (std::size_t k = 0; k < 4; ++k) corners[k] = {t.v[k], field.value(t.v[k]), gradientVector(field.gradient(t.v[k]))};
+    for (std::size_t k = 0; k < 4; ++k)
+      corners[k] = {t.v[k], field.value(t.v[k]), gradientVector(field.gradient(t.v[k]))};
     builder.addTetrahedron(corners, hasDiamond ? static_cast<DiamondId>(order.index(diamond)) : kNoDiamond);
   });
   IsoMesh out = builder.take();

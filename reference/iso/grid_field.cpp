@@ -16,8 +16,8 @@ bool insideVolume(const GridPoint& p, const Dims3& d) { return p[0] < d[0] && p[
 DenseGridField::DenseGridField(const Volume<std::uint16_t>& volume, const std::vector<std::int8_t>& gradients)
     : grid_(lebGridCovering(volume.dims())), dims_(volume.dims()) {
   if (gradients.size() != 3 * volume.data().size())
-    throw std::invalid_argument("gradients: " + std::to_string(gradients.size()) + " components for " + std::to_string(volume.data().size()) +
-                                " samples (3 per sample expected)");
+    throw std::invalid_argument("gradients: " + std::to_string(gradients.size()) + " components for " +
+                                std::to_string(volume.data().size()) + " samples (3 per sample expected)");
   values_.assign(grid_.pointCount(), 0);
   gradients_.assign(3 * grid_.pointCount(), 0);
   // Walk the points coarse to fine (hierarchical order), so every padding point finds its split
@@ -29,13 +29,15 @@ DenseGridField::DenseGridField(const Volume<std::uint16_t>& volume, const std::v
     if (insideVolume(p, dims_)) {
       const std::size_t s = volume.index(p[0], p[1], p[2]);
       values_[i] = volume.data()[s];
-      for (int a = 0; a < 3; ++a) gradients_[3 * i + static_cast<std::uint64_t>(a)] = gradients[3 * s + static_cast<std::size_t>(a)];
+      for (int a = 0; a < 3; ++a)
+        gradients_[3 * i + static_cast<std::uint64_t>(a)] = gradients[3 * s + static_cast<std::size_t>(a)];
     } else if (c.level() >= 0) {
       const SplitEdge e = splitEdgeOf(p, c.scaleLog2(), c.oddAxes());
       const std::uint64_t ia = grid_.linearIndex(e.a), ib = grid_.linearIndex(e.b);
       values_[i] = static_cast<std::uint16_t>(predictMidpoint(values_[ia], values_[ib]));
       for (std::uint64_t a = 0; a < 3; ++a)
-        gradients_[3 * i + a] = static_cast<std::int8_t>(predictMidpoint(gradients_[3 * ia + a], gradients_[3 * ib + a]));
+        gradients_[3 * i + a] =
+            static_cast<std::int8_t>(predictMidpoint(gradients_[3 * ia + a], gradients_[3 * ib + a]));
     }  // a root corner outside the volume: 0 (its prediction)
   }
 }
@@ -45,10 +47,13 @@ std::array<std::int8_t, 3> DenseGridField::gradient(const GridPoint& p) {
   return {gradients_[i], gradients_[i + 1], gradients_[i + 2]};
 }
 
-CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes, std::size_t pointCacheEntries)
+CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
+                                         std::size_t pointCacheEntries)
     : grid_(stream->grid), dims_(stream->dims), reader_(stream, pageCacheBytes), pointCacheEntries_(pointCacheEntries) {
   if (stream->channel(LebChannelKind::Gradients) == nullptr)
-    throw std::invalid_argument("the stream has no gradients channel (encoded with --no-gradients): isosurfaces need the gradients for shading");
+    throw std::invalid_argument(
+        "the stream has no gradients channel (encoded with --no-gradients): isosurfaces need the gradients for "
+        "shading");
 }
 
 const CompressedGridField::Entry& CompressedGridField::entry(const GridPoint& p) {

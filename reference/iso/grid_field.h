@@ -59,7 +59,8 @@ class DenseGridField final : public GridField {
 // gradients.
 class CompressedGridField final : public GridField {
  public:
-  CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes, std::size_t pointCacheEntries = 1u << 22);
+  CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
+                      std::size_t pointCacheEntries = 1u << 22);
   const LebGrid& grid() const override { return grid_; }
   const Dims3& volumeDims() const override { return dims_; }
   std::uint16_t value(const GridPoint& p) override;

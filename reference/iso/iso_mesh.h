@@ -17,9 +17,9 @@ using DiamondId = std::uint32_t;
 inline constexpr DiamondId kNoDiamond = 0xffffffffu;
 
 struct IsoMesh {
-  std::vector<glm::vec3> positions;  // grid coordinates
-  std::vector<glm::vec3> normals;    // unit length (pointing towards lower field values)
-  std::vector<std::uint32_t> indices;  // 3 per triangle, counter-clockwise seen from the normal side
+  std::vector<glm::vec3> positions;        // grid coordinates
+  std::vector<glm::vec3> normals;          // unit length (pointing towards lower field values)
+  std::vector<std::uint32_t> indices;      // 3 per triangle, counter-clockwise seen from the normal side
   std::vector<DiamondId> triangleDiamond;  // one per triangle
 
   std::size_t triangleCount() const { return indices.size() / 3; }

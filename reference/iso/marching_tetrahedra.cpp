@@ -15,7 +15,8 @@ constexpr std::uint64_t kVertexKey = 0xffffffffULL;
 
 }  // namespace
 
-IsoMeshBuilder::IsoMeshBuilder(const LebGrid& grid, double isovalue, const GridPoint& clipHi) : grid_(grid), iso_(isovalue), clipHi_(clipHi) {}
+IsoMeshBuilder::IsoMeshBuilder(const LebGrid& grid, double isovalue, const GridPoint& clipHi)
+    : grid_(grid), iso_(isovalue), clipHi_(clipHi) {}
 
 std::uint32_t IsoMeshBuilder::newVertex(const glm::dvec3& position, const glm::dvec3& normal) {
   positions_.push_back(position);
@@ -25,7 +26,8 @@ std::uint32_t IsoMeshBuilder::newVertex(const glm::dvec3& position, const glm::d
 
 std::uint32_t IsoMeshBuilder::crossing(const TetCorner& out, const TetCorner& in) {
   const bool atVertex = in.value == iso_;
-  const std::uint64_t key = atVertex ? (kVertexKey << 32) | grid_.linearIndex(in.p) : (grid_.linearIndex(out.p) << 32) | grid_.linearIndex(in.p);
+  const std::uint64_t key = atVertex ? (kVertexKey << 32) | grid_.linearIndex(in.p)
+                                     : (grid_.linearIndex(out.p) << 32) | grid_.linearIndex(in.p);
   if (const auto it = edgeVertex_.find(key); it != edgeVertex_.end()) return it->second;
   const glm::dvec3 o(out.p[0], out.p[1], out.p[2]), i(in.p[0], in.p[1], in.p[2]);
   glm::dvec3 position, gradient;
@@ -90,8 +92,14 @@ void IsoMeshBuilder::addTetrahedron(const std::array<TetCorner, 4>& c, DiamondId
   for (int k = 0; k < 4; ++k) (c[static_cast<std::size_t>(k)].value >= iso_ ? in : out).push_back(k);
   if (in.empty() || out.empty()) return;
   glm::dvec3 outward(0.0);
-  for (int k : out) outward += glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1], c[static_cast<std::size_t>(k)].p[2]) / double(out.size());
-  for (int k : in) outward -= glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1], c[static_cast<std::size_t>(k)].p[2]) / double(in.size());
+  for (int k : out)
+    outward += glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1],
+                          c[static_cast<std::size_t>(k)].p[2]) /
+               double(out.size());
+  for (int k : in)
+    outward -= glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1],
+                          c[static_cast<std::size_t>(k)].p[2]) /
+               double(in.size());
   auto x = [&](int o, int i) { return crossing(c[static_cast<std::size_t>(o)], c[static_cast<std::size_t>(i)]); };
   if (in.size() == 1) {
     emit({x(out[0], in[0]), x(out[1], in[0]), x(out[2], in[0])}, outward, diamond);
@@ -119,7 +127,8 @@ IsoMesh IsoMeshBuilder::take() {
   std::vector<glm::dvec3> faceSum(used.size(), glm::dvec3(0.0));
   for (std::size_t t = 0; t < mesh_.indices.size(); t += 3) {
     const std::uint32_t a = mesh_.indices[t], b = mesh_.indices[t + 1], cc = mesh_.indices[t + 2];
-    const glm::dvec3 n = glm::cross(positions_[used[b]] - positions_[used[a]], positions_[used[cc]] - positions_[used[a]]);
+    const glm::dvec3 n =
+        glm::cross(positions_[used[b]] - positions_[used[a]], positions_[used[cc]] - positions_[used[a]]);
     for (std::uint32_t v : {a, b, cc}) faceSum[v] += n;
   }
   IsoMesh mesh = std::move(mesh_);

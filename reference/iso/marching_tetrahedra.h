@@ -54,8 +54,8 @@ class IsoMeshBuilder {
   double iso_;
   GridPoint clipHi_;
   IsoMesh mesh_;
-  std::vector<glm::dvec3> positions_, normals_;  // double while building
-  std::unordered_map<std::uint64_t, std::uint32_t> edgeVertex_;   // (outside, inside) linear indices
+  std::vector<glm::dvec3> positions_, normals_;                                 // double while building
+  std::unordered_map<std::uint64_t, std::uint32_t> edgeVertex_;                 // (outside, inside) linear indices
   std::array<std::unordered_map<std::uint64_t, std::uint32_t>, 3> clipVertex_;  // per axis: (vertex, vertex)
 };
 

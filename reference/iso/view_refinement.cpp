@@ -33,7 +33,8 @@ void ViewRefinement::Queue::clear() {
   priority_.clear();
 }
 
-ViewRefinement::ViewRefinement(const DiamondBounds& bounds, double isovalue) : bounds_(&bounds), isovalue_(isovalue), mesh_(bounds.grid) {
+ViewRefinement::ViewRefinement(const DiamondBounds& bounds, double isovalue)
+    : bounds_(&bounds), isovalue_(isovalue), mesh_(bounds.grid) {
   if (bounds.grid.k >= 1) {
     const int h = bounds.grid.side() / 2;
     split_.insert(bounds.grid.linearIndex({h, h, h}), 0.0);  // the root diamond
@@ -77,7 +78,8 @@ void ViewRefinement::afterMerge(const GridPoint& d) {
     if (mesh_.canMerge(p)) merge_.insert(g.linearIndex(p), priority(p));
 }
 
-RefinementStats ViewRefinement::update(const ViewCamera& camera, const RefinementBudget& budget, const std::function<bool(const GridPoint&)>& occluded) {
+RefinementStats ViewRefinement::update(const ViewCamera& camera, const RefinementBudget& budget,
+                                       const std::function<bool(const GridPoint&)>& occluded) {
   cameraBasis(camera);  // validates
   camera_ = camera;
   occluded_ = occluded;

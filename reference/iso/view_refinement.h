@@ -34,7 +34,7 @@
 namespace voxref::ref {
 
 struct RefinementBudget {
-  double threshold = 2.0;           // pixels
+  double threshold = 2.0;            // pixels
   std::size_t maxSplits = 1u << 20;  // per frame
   std::size_t maxMerges = 1u << 20;  // per frame
 };
@@ -42,7 +42,7 @@ struct RefinementBudget {
 struct RefinementStats {
   std::size_t splits = 0, merges = 0;
   std::size_t splitQueue = 0, mergeQueue = 0;  // sizes after the frame
-  bool budgetExhausted = false;                 // a split above the threshold was left undone
+  bool budgetExhausted = false;                // a split above the threshold was left undone
 };
 
 class ViewRefinement {
@@ -56,7 +56,8 @@ class ViewRefinement {
 
   // One frame. occluded(d) says whether diamond d was found occluded (its error counts as zero);
   // pass an empty function for none.
-  RefinementStats update(const ViewCamera& camera, const RefinementBudget& budget, const std::function<bool(const GridPoint&)>& occluded = {});
+  RefinementStats update(const ViewCamera& camera, const RefinementBudget& budget,
+                         const std::function<bool(const GridPoint&)>& occluded = {});
 
   double priority(const GridPoint& d) const;  // with the camera and occlusion of the last update
   // Queue members in ascending grid index (for occlusion tests and reports).

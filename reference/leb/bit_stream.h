@@ -38,7 +38,10 @@ class BitWriter {
 // caller checks overrun() (the page decoder turns it into "the page ends inside a code").
 class BitReader {
  public:
-  explicit BitReader(std::string_view bytes) : p_(reinterpret_cast<const unsigned char*>(bytes.data())), size_(bytes.size()) { refill(); }
+  explicit BitReader(std::string_view bytes)
+      : p_(reinterpret_cast<const unsigned char*>(bytes.data())), size_(bytes.size()) {
+    refill();
+  }
 
   // The next n bits (1 <= n <= 32) without consuming them.
   std::uint32_t peek(int n) const { return static_cast<std::uint32_t>(buf_ >> (64 - n)); }

@@ -60,7 +60,9 @@ bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex) {
 
 DiamondMesh::DiamondMesh(const LebGrid& grid) : grid_(makeLebGrid(grid.k)) {}
 
-bool DiamondMesh::isSplit(const GridPoint& d) const { return grid_.contains(d) && split_.count(grid_.linearIndex(d)) != 0; }
+bool DiamondMesh::isSplit(const GridPoint& d) const {
+  return grid_.contains(d) && split_.count(grid_.linearIndex(d)) != 0;
+}
 
 std::vector<GridPoint> DiamondMesh::split(const GridPoint& d) {
   std::vector<GridPoint> done;
@@ -81,7 +83,8 @@ bool DiamondMesh::canMerge(const GridPoint& d) const {
 
 void DiamondMesh::merge(const GridPoint& d) {
   if (!canMerge(d))
-    throw std::logic_error("diamond " + text(d) + (isSplit(d) ? " has a split child: merge the children first" : " is not split"));
+    throw std::logic_error("diamond " + text(d) +
+                           (isSplit(d) ? " has a split child: merge the children first" : " is not split"));
   split_.erase(grid_.linearIndex(d));
 }
 

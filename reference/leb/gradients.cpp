@@ -18,11 +18,13 @@ std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& v) {
           int lo[3] = {x, y, z}, hi[3] = {x, y, z};
           lo[a] = p[a] > 0 ? p[a] - 1 : p[a];
           hi[a] = p[a] + 1 < d[a] ? p[a] + 1 : p[a];
-          g[a] = (static_cast<double>(v.at(hi[0], hi[1], hi[2])) - static_cast<double>(v.at(lo[0], lo[1], lo[2]))) / (hi[a] - lo[a]);
+          g[a] = (static_cast<double>(v.at(hi[0], hi[1], hi[2])) - static_cast<double>(v.at(lo[0], lo[1], lo[2]))) /
+                 (hi[a] - lo[a]);
         }
         const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
         if (len == 0.0) continue;
-        for (int a = 0; a < 3; ++a) out[3 * i + static_cast<std::size_t>(a)] = static_cast<std::int8_t>(std::lround(127.0 * g[a] / len));
+        for (int a = 0; a < 3; ++a)
+          out[3 * i + static_cast<std::size_t>(a)] = static_cast<std::int8_t>(std::lround(127.0 * g[a] / len));
       }
   return out;
 }

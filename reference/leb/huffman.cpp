@@ -26,7 +26,8 @@ std::vector<std::uint8_t> huffmanCodeLengths(std::span<const std::uint64_t> coun
     return lengths;
   }
   if (maxLength < 1 || maxLength > 30 || used.size() > (std::size_t{1} << maxLength))
-    throw std::invalid_argument(std::to_string(used.size()) + " symbols do not fit in codes of at most " + std::to_string(maxLength) + " bits");
+    throw std::invalid_argument(std::to_string(used.size()) + " symbols do not fit in codes of at most " +
+                                std::to_string(maxLength) + " bits");
   // Leaves sorted by weight, ties by symbol (stable sort of the symbol order).
   std::stable_sort(used.begin(), used.end(), [&](std::size_t a, std::size_t b) { return counts[a] < counts[b]; });
   std::vector<Item> leaves;
@@ -46,7 +47,8 @@ std::vector<std::uint8_t> huffmanCodeLengths(std::span<const std::uint64_t> coun
       Item p;
       p.weight = list[i].weight + list[i + 1].weight;
       p.uses = list[i].uses;
-      for (std::size_t s = 0; s < p.uses.size(); ++s) p.uses[s] = static_cast<std::uint16_t>(p.uses[s] + list[i + 1].uses[s]);
+      for (std::size_t s = 0; s < p.uses.size(); ++s)
+        p.uses[s] = static_cast<std::uint16_t>(p.uses[s] + list[i + 1].uses[s]);
       packages.push_back(std::move(p));
     }
     std::vector<Item> merged;
@@ -62,7 +64,8 @@ std::vector<std::uint8_t> huffmanCodeLengths(std::span<const std::uint64_t> coun
   }
   // The 2n - 2 cheapest items: a symbol's length is the number of them it occurs in.
   for (std::size_t i = 0; i < 2 * used.size() - 2; ++i)
-    for (std::size_t s = 0; s < used.size(); ++s) lengths[used[s]] = static_cast<std::uint8_t>(lengths[used[s]] + list[i].uses[s]);
+    for (std::size_t s = 0; s < used.size(); ++s)
+      lengths[used[s]] = static_cast<std::uint8_t>(lengths[used[s]] + list[i].uses[s]);
   return lengths;
 }
 
@@ -70,8 +73,8 @@ std::string codeLengthProblem(std::span<const std::uint8_t> lengths, int maxLeng
   std::uint64_t kraft = 0;  // in units of 2^-maxLength
   for (std::size_t s = 0; s < lengths.size(); ++s) {
     if (lengths[s] > maxLength)
-      return "symbol " + std::to_string(s) + " has a code of " + std::to_string(lengths[s]) + " bits, more than the " + std::to_string(maxLength) +
-             " allowed";
+      return "symbol " + std::to_string(s) + " has a code of " + std::to_string(lengths[s]) + " bits, more than the " +
+             std::to_string(maxLength) + " allowed";
     if (lengths[s] > 0) kraft += std::uint64_t{1} << (maxLength - lengths[s]);
   }
   if (kraft > (std::uint64_t{1} << maxLength))
@@ -84,7 +87,8 @@ std::vector<std::uint32_t> canonicalCodes(std::span<const std::uint8_t> lengths)
   // RFC 1951 section 3.2.2.
   int maxLen = 0;
   for (std::uint8_t l : lengths) maxLen = std::max(maxLen, static_cast<int>(l));
-  std::vector<std::uint32_t> perLength(static_cast<std::size_t>(maxLen) + 1, 0), next(static_cast<std::size_t>(maxLen) + 2, 0);
+  std::vector<std::uint32_t> perLength(static_cast<std::size_t>(maxLen) + 1, 0),
+      next(static_cast<std::size_t>(maxLen) + 2, 0);
   for (std::uint8_t l : lengths)
     if (l) ++perLength[l];
   std::uint32_t code = 0;

@@ -57,7 +57,9 @@ std::uint64_t HzOrder::index(const GridPoint& p) const {
 }
 
 GridPoint HzOrder::point(std::uint64_t h) const {
-  if (h >= size()) throw std::out_of_range("hierarchical index " + std::to_string(h) + " is outside the grid of " + std::to_string(size()) + " points");
+  if (h >= size())
+    throw std::out_of_range("hierarchical index " + std::to_string(h) + " is outside the grid of " +
+                            std::to_string(size()) + " points");
   HzCursor cursor(*this, h);
   return cursor.point();
 }
@@ -68,7 +70,9 @@ HzCursor::HzCursor(const HzOrder& order, std::uint64_t start) : order_(&order), 
     level_ = -1;
     cell_ = h_;
   } else {
-    level_ = static_cast<int>(std::upper_bound(order.levelBegin_.begin(), order.levelBegin_.end(), h_) - order.levelBegin_.begin()) - 2;
+    level_ = static_cast<int>(std::upper_bound(order.levelBegin_.begin(), order.levelBegin_.end(), h_) -
+                              order.levelBegin_.begin()) -
+             2;
     const HzOrder::Level& lv = order.levels_[static_cast<std::size_t>(level_)];
     block_ = 7;
     while (lv.blocks[block_].begin > h_) --block_;

@@ -83,7 +83,7 @@ class HzCursor {
   std::uint64_t h_;
   GridPoint p_{0, 0, 0};
   int level_ = -1, block_ = 0;
-  std::uint64_t cell_ = 0;    // Morton code of the cell inside the block
+  std::uint64_t cell_ = 0;  // Morton code of the cell inside the block
   std::size_t orientation_ = 0;
   GridPoint cellBase_{0, 0, 0};  // the cell's corner (its coordinates times the cell side)
 };
@@ -133,10 +133,15 @@ inline std::uint64_t compact2(std::uint64_t v) {
 inline std::uint64_t mortonEncode(const int* c, int count) {
   using namespace hz_detail;
   switch (count) {
-    case 3: return spread3(static_cast<std::uint64_t>(c[0])) | spread3(static_cast<std::uint64_t>(c[1])) << 1 | spread3(static_cast<std::uint64_t>(c[2])) << 2;
-    case 2: return spread2(static_cast<std::uint64_t>(c[0])) | spread2(static_cast<std::uint64_t>(c[1])) << 1;
-    case 1: return static_cast<std::uint64_t>(c[0]);
-    default: return 0;
+    case 3:
+      return spread3(static_cast<std::uint64_t>(c[0])) | spread3(static_cast<std::uint64_t>(c[1])) << 1 |
+             spread3(static_cast<std::uint64_t>(c[2])) << 2;
+    case 2:
+      return spread2(static_cast<std::uint64_t>(c[0])) | spread2(static_cast<std::uint64_t>(c[1])) << 1;
+    case 1:
+      return static_cast<std::uint64_t>(c[0]);
+    default:
+      return 0;
   }
 }
 inline void mortonDecode(std::uint64_t code, int count, int* c) {
@@ -151,8 +156,11 @@ inline void mortonDecode(std::uint64_t code, int count, int* c) {
       c[0] = static_cast<int>(compact2(code));
       c[1] = static_cast<int>(compact2(code >> 1));
       break;
-    case 1: c[0] = static_cast<int>(code); break;
-    default: break;
+    case 1:
+      c[0] = static_cast<int>(code);
+      break;
+    default:
+      break;
   }
 }
 

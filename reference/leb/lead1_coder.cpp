@@ -7,7 +7,8 @@
 
 namespace voxref::ref {
 
-Lead1Counter::Lead1Counter(int valueBits) : valueBits_(valueBits), counts_(static_cast<std::size_t>((valueBits + 1) * (valueBits + 1)), 0) {}
+Lead1Counter::Lead1Counter(int valueBits)
+    : valueBits_(valueBits), counts_(static_cast<std::size_t>((valueBits + 1) * (valueBits + 1)), 0) {}
 
 void Lead1Counter::add(std::span<const std::int32_t> page) {
   const int symbols = valueBits_ + 1;
@@ -28,27 +29,33 @@ Lead1Code Lead1Counter::code() const {
   c.valueBits = valueBits_;
   const std::size_t symbols = static_cast<std::size_t>(valueBits_ + 1);
   for (std::size_t ctx = 0; ctx < symbols; ++ctx) {
-    const auto l = huffmanCodeLengths(std::span<const std::uint64_t>(counts_).subspan(ctx * symbols, symbols), kMaxCodeLength);
+    const auto l =
+        huffmanCodeLengths(std::span<const std::uint64_t>(counts_).subspan(ctx * symbols, symbols), kMaxCodeLength);
     c.lengths.insert(c.lengths.end(), l.begin(), l.end());
   }
   return c;
 }
 
 std::string lead1CodeProblem(const Lead1Code& code) {
-  if (code.valueBits != 8 && code.valueBits != 16) return "value bits must be 8 or 16, got " + std::to_string(code.valueBits);
+  if (code.valueBits != 8 && code.valueBits != 16)
+    return "value bits must be 8 or 16, got " + std::to_string(code.valueBits);
   const std::size_t symbols = static_cast<std::size_t>(code.symbols());
-  if (code.lengths.size() != symbols * symbols) return "the code table needs " + std::to_string(symbols * symbols) + " lengths";
+  if (code.lengths.size() != symbols * symbols)
+    return "the code table needs " + std::to_string(symbols * symbols) + " lengths";
   for (std::size_t ctx = 0; ctx < symbols; ++ctx) {
-    const std::string p = codeLengthProblem(std::span<const std::uint8_t>(code.lengths).subspan(ctx * symbols, symbols), kMaxCodeLength);
+    const std::string p =
+        codeLengthProblem(std::span<const std::uint8_t>(code.lengths).subspan(ctx * symbols, symbols), kMaxCodeLength);
     if (!p.empty()) return "context " + std::to_string(ctx) + ": " + p;
   }
   return "";
 }
 
-Lead1Encoder::Lead1Encoder(const Lead1Code& code) : valueBits_(code.valueBits), symbols_(code.symbols()), lengths_(code.lengths) {
+Lead1Encoder::Lead1Encoder(const Lead1Code& code)
+    : valueBits_(code.valueBits), symbols_(code.symbols()), lengths_(code.lengths) {
   if (const std::string p = lead1CodeProblem(code); !p.empty()) throw std::invalid_argument("lead-1 code: " + p);
   for (int ctx = 0; ctx < symbols_; ++ctx) {
-    const auto c = canonicalCodes(std::span<const std::uint8_t>(lengths_).subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
+    const auto c = canonicalCodes(std::span<const std::uint8_t>(lengths_).subspan(
+        static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
     codes_.insert(codes_.end(), c.begin(), c.end());
   }
 }
@@ -57,10 +64,13 @@ void Lead1Encoder::encodePage(std::span<const std::int32_t> deltas, BitWriter& o
   const std::int32_t lo = -(1 << (valueBits_ - 1)), hi = (1 << (valueBits_ - 1)) - 1;
   int context = 0;
   for (std::int32_t d : deltas) {
-    if (d < lo || d > hi) throw std::invalid_argument("delta " + std::to_string(d) + " is outside the " + std::to_string(valueBits_) + "-bit range");
+    if (d < lo || d > hi)
+      throw std::invalid_argument("delta " + std::to_string(d) + " is outside the " + std::to_string(valueBits_) +
+                                  "-bit range");
     const int s = lead1Symbol(d);
     const std::size_t at = static_cast<std::size_t>(context * symbols_ + s);
-    if (lengths_[at] == 0) throw std::invalid_argument("symbol " + std::to_string(s) + " has no code in context " + std::to_string(context));
+    if (lengths_[at] == 0)
+      throw std::invalid_argument("symbol " + std::to_string(s) + " has no code in context " + std::to_string(context));
     out.put(codes_[at], lengths_[at]);
     if (s > 0) {
       const std::uint32_t m = static_cast<std::uint32_t>(d < 0 ? -d : d);
@@ -74,27 +84,34 @@ void Lead1Encoder::encodePage(std::span<const std::int32_t> deltas, BitWriter& o
 Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), symbols_(code.symbols()) {
   if (const std::string p = lead1CodeProblem(code); !p.empty()) throw std::invalid_argument("lead-1 code: " + p);
   for (int ctx = 0; ctx < symbols_; ++ctx)
-    tables_.emplace_back(std::span<const std::uint8_t>(code.lengths).subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
+    tables_.emplace_back(std::span<const std::uint8_t>(code.lengths)
+                             .subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
 }
 
-void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset, std::string_view what) const {
+void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
+                              std::string_view what) const {
   Lead1PageReader r(*this, page, streamOffset, std::string(what));
   for (std::int32_t& d : out) d = r.next();
   r.finish();
 }
 
-Lead1PageReader::Lead1PageReader(const Lead1Decoder& decoder, std::string_view page, std::size_t streamOffset, std::string what)
+Lead1PageReader::Lead1PageReader(const Lead1Decoder& decoder, std::string_view page, std::size_t streamOffset,
+                                 std::string what)
     : decoder_(&decoder), page_(page), in_(page), streamOffset_(streamOffset), what_(std::move(what)) {}
 
 void Lead1PageReader::fail(const std::string& detail) const {
-  throw StreamError(streamOffset_ + std::min(page_.size(), in_.bitsConsumed() / 8), what_ + ": value " + std::to_string(read_) + ": " + detail);
+  throw StreamError(streamOffset_ + std::min(page_.size(), in_.bitsConsumed() / 8),
+                    what_ + ": value " + std::to_string(read_) + ": " + detail);
 }
 
 std::int32_t Lead1PageReader::next() {
   const HuffmanDecodeTable& t = decoder_->tables_[static_cast<std::size_t>(context_)];
-  if (t.empty()) fail("context " + std::to_string(context_) + " has no codes, yet a value follows a symbol " + std::to_string(context_));
+  if (t.empty())
+    fail("context " + std::to_string(context_) + " has no codes, yet a value follows a symbol " +
+         std::to_string(context_));
   const std::uint16_t e = t.entry(in_.peek(t.bits()));
-  if (e == 0) fail("the next " + std::to_string(t.bits()) + " bits match no code of context " + std::to_string(context_));
+  if (e == 0)
+    fail("the next " + std::to_string(t.bits()) + " bits match no code of context " + std::to_string(context_));
   const int s = e >> 4;
   in_.skip(e & 15);
   std::int32_t d = 0;
@@ -105,7 +122,8 @@ std::int32_t Lead1PageReader::next() {
     const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
     const std::uint32_t limit = 1u << (decoder_->valueBits_ - 1);
     if (m > limit || (m == limit && !negative))
-      fail("delta " + std::string(negative ? "-" : "+") + std::to_string(m) + " is outside the " + std::to_string(decoder_->valueBits_) + "-bit range");
+      fail("delta " + std::string(negative ? "-" : "+") + std::to_string(m) + " is outside the " +
+           std::to_string(decoder_->valueBits_) + "-bit range");
     d = negative ? -static_cast<std::int32_t>(m) : static_cast<std::int32_t>(m);
   }
   if (in_.overrun()) fail("the page ends inside this value");
@@ -117,7 +135,8 @@ std::int32_t Lead1PageReader::next() {
 void Lead1PageReader::finish() const {
   const std::size_t used = in_.bitsConsumed(), total = page_.size() * 8;
   if (total - used >= 8)
-    throw StreamError(streamOffset_ + (used + 7) / 8, what_ + ": " + std::to_string(page_.size() - (used + 7) / 8) + " bytes left over after the last value");
+    throw StreamError(streamOffset_ + (used + 7) / 8, what_ + ": " + std::to_string(page_.size() - (used + 7) / 8) +
+                                                          " bytes left over after the last value");
   if (used < total && (static_cast<unsigned char>(page_.back()) & ((1u << (total - used)) - 1)) != 0)
     throw StreamError(streamOffset_ + page_.size() - 1, what_ + ": the padding bits after the last value are not zero");
 }

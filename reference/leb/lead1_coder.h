@@ -73,7 +73,8 @@ class Lead1Decoder {
   // Decodes exactly out.size() deltas from one page's bytes (Lead1PageReader, then finish()).
   // `streamOffset` is the offset of the page's first byte in the whole stream and `what` names
   // the page ("data page 17"): both go into the StreamError messages.
-  void decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset, std::string_view what) const;
+  void decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
+                  std::string_view what) const;
 
  private:
   friend class Lead1PageReader;

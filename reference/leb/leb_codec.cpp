@@ -37,14 +37,17 @@ struct GridValues {
   }
   std::uint64_t slot(const GridPoint& p) const {
     const auto b = static_cast<std::uint64_t>(bricksPerAxis);
-    const std::uint64_t brick = static_cast<std::uint64_t>(p[0] >> 3) + b * (static_cast<std::uint64_t>(p[1] >> 3) + b * static_cast<std::uint64_t>(p[2] >> 3));
+    const std::uint64_t brick = static_cast<std::uint64_t>(p[0] >> 3) +
+                                b * (static_cast<std::uint64_t>(p[1] >> 3) + b * static_cast<std::uint64_t>(p[2] >> 3));
     return brick * 512 + static_cast<std::uint64_t>((p[0] & 7) | (p[1] & 7) << 3 | (p[2] & 7) << 6);
   }
   std::int32_t load(std::uint64_t at, int c) const {
-    return wrapSample(raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)], spec.valueBits, spec.isSigned);
+    return wrapSample(raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)],
+                      spec.valueBits, spec.isSigned);
   }
   void store(std::uint64_t at, int c, std::int32_t v) {
-    raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)] = static_cast<std::uint16_t>(v);
+    raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)] =
+        static_cast<std::uint16_t>(v);
   }
   ChannelSpec spec;
   int bricksPerAxis;
@@ -57,7 +60,8 @@ struct GridValues {
 // prediction) gives its value (the encoder reads the sample and records the delta; the decoder
 // reads the delta and adds it); a point of the padding takes its prediction.
 template <class ValueOf>
-void walkPredictions(const HzOrder& order, const Dims3& dims, GridValues& g, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
+void walkPredictions(const HzOrder& order, const Dims3& dims, GridValues& g, std::uint64_t begin, std::uint64_t end,
+                     ValueOf&& valueOf) {
   const int comps = g.spec.components;
   for (HzCursor c(order, begin); c.index() < end; c.next()) {
     const GridPoint& p = c.point();
@@ -69,7 +73,9 @@ void walkPredictions(const HzOrder& order, const Dims3& dims, GridValues& g, std
     }
     const std::uint64_t gi = g.slot(p);
     if (insideVolume(p, dims)) {
-      const std::size_t vi = static_cast<std::size_t>(p[0]) + static_cast<std::size_t>(dims[0]) * (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(dims[1]) * p[2]);
+      const std::size_t vi = static_cast<std::size_t>(p[0]) +
+                             static_cast<std::size_t>(dims[0]) *
+                                 (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(dims[1]) * p[2]);
       for (int k = 0; k < comps; ++k) g.store(gi, k, valueOf(c.index(), vi, k, pred[k]));
     } else {
       for (int k = 0; k < comps; ++k) g.store(gi, k, pred[k]);
@@ -84,7 +90,8 @@ struct ChannelDeltas {
 };
 
 template <class Sample>
-ChannelDeltas predictChannel(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits, Sample&& sample) {
+ChannelDeltas predictChannel(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits,
+                             Sample&& sample) {
   GridValues g(order.grid(), spec);
   ChannelDeltas out;
   const std::uint64_t perPage = std::uint64_t{1} << pageBits;
@@ -92,36 +99,43 @@ ChannelDeltas predictChannel(const HzOrder& order, const Dims3& dims, const Chan
   out.deltas.reserve(static_cast<std::size_t>(sampleCount(dims)) * static_cast<std::size_t>(spec.components));
   for (std::uint64_t page = 0; page < pages; ++page) {
     out.pageStart.push_back(out.deltas.size());
-    walkPredictions(order, dims, g, page * perPage, std::min(order.size(), (page + 1) * perPage), [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
-      const std::int32_t v = sample(vi, k);
-      out.deltas.push_back(predictionDelta(v, pred, spec.valueBits));
-      return v;
-    });
+    walkPredictions(order, dims, g, page * perPage, std::min(order.size(), (page + 1) * perPage),
+                    [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
+                      const std::int32_t v = sample(vi, k);
+                      out.deltas.push_back(predictionDelta(v, pred, spec.valueBits));
+                      return v;
+                    });
   }
   out.pageStart.push_back(out.deltas.size());
   return out;
 }
 
-ChannelDeltas predictChannelOf(const HzOrder& order, const Volume<std::uint16_t>& volume, const ChannelSpec& spec, int pageBits) {
+ChannelDeltas predictChannelOf(const HzOrder& order, const Volume<std::uint16_t>& volume, const ChannelSpec& spec,
+                               int pageBits) {
   if (spec.kind == LebChannelKind::Data)
-    return predictChannel(order, volume.dims(), spec, pageBits, [&](std::size_t vi, int) { return static_cast<std::int32_t>(volume.data()[vi]); });
+    return predictChannel(order, volume.dims(), spec, pageBits,
+                          [&](std::size_t vi, int) { return static_cast<std::int32_t>(volume.data()[vi]); });
   const std::vector<std::int8_t> grads = quantizedGradients(volume);
-  return predictChannel(order, volume.dims(), spec, pageBits, [&](std::size_t vi, int k) { return static_cast<std::int32_t>(grads[3 * vi + static_cast<std::size_t>(k)]); });
+  return predictChannel(order, volume.dims(), spec, pageBits, [&](std::size_t vi, int k) {
+    return static_cast<std::int32_t>(grads[3 * vi + static_cast<std::size_t>(k)]);
+  });
 }
 
 void checkPageBits(int pageBits) {
   if (pageBits < kMinLebPageBits || pageBits > kMaxLebPageBits)
-    throw std::invalid_argument("page bits must be in " + std::to_string(kMinLebPageBits) + ".." + std::to_string(kMaxLebPageBits) + ", got " +
-                                std::to_string(pageBits));
+    throw std::invalid_argument("page bits must be in " + std::to_string(kMinLebPageBits) + ".." +
+                                std::to_string(kMaxLebPageBits) + ", got " + std::to_string(pageBits));
 }
 
 void checkSamples(const Volume<std::uint16_t>& volume, int sampleBits) {
-  if (sampleBits != 8 && sampleBits != 16) throw std::invalid_argument("sample bits must be 8 or 16, got " + std::to_string(sampleBits));
+  if (sampleBits != 8 && sampleBits != 16)
+    throw std::invalid_argument("sample bits must be 8 or 16, got " + std::to_string(sampleBits));
   const std::uint32_t limit = 1u << sampleBits;
   const auto& d = volume.data();
   const auto it = std::find_if(d.begin(), d.end(), [&](std::uint16_t v) { return v >= limit; });
   if (it != d.end())
-    throw std::invalid_argument("sample " + std::to_string(it - d.begin()) + " is " + std::to_string(*it) + ", not a " + std::to_string(sampleBits) + "-bit value");
+    throw std::invalid_argument("sample " + std::to_string(it - d.begin()) + " is " + std::to_string(*it) + ", not a " +
+                                std::to_string(sampleBits) + "-bit value");
 }
 
 }  // namespace
@@ -143,7 +157,8 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
     };
     Lead1Counter counter(spec.valueBits);
     for (std::size_t p = 0; p < pages; ++p) counter.add(pageDeltas(p));
-    LebChannelPayload c{kind, spec.components, spec.valueBits, spec.isSigned, counter.code(), std::vector<std::string>(pages)};
+    LebChannelPayload c{kind,          spec.components, spec.valueBits,
+                        spec.isSigned, counter.code(),  std::vector<std::string>(pages)};
     const Lead1Encoder encoder(c.code);
     parallelFor(static_cast<int>(pages), o.threads, [&](int p) {
       BitWriter w;
@@ -158,7 +173,8 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
 std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o) {
   checkPageBits(o.pageBits);
   const LebGrid grid = lebGridCovering(dims);
-  const auto samples = static_cast<std::uint64_t>(dims[0]) * static_cast<std::uint64_t>(dims[1]) * static_cast<std::uint64_t>(dims[2]);
+  const auto samples =
+      static_cast<std::uint64_t>(dims[0]) * static_cast<std::uint64_t>(dims[1]) * static_cast<std::uint64_t>(dims[2]);
   const auto bricks = static_cast<std::uint64_t>((grid.pointsPerAxis() + 7) / 8);
   const auto points = static_cast<std::uint64_t>(grid.pointsPerAxis());
   const std::uint64_t pages = (points * points * points + (std::uint64_t{1} << o.pageBits) - 1) >> o.pageBits;
@@ -167,16 +183,19 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
   auto coded = [&](int components) { return 4 * samples * static_cast<std::uint64_t>(components) + pages * 64; };
   std::uint64_t peak = 0, pagesSoFar = 0;
   for (const int components : o.gradients ? std::vector<int>{1, 3} : std::vector<int>{1}) {
-    const std::uint64_t gridBytes = bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(components) * 2;  // GridValues
+    const std::uint64_t gridBytes =
+        bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(components) * 2;  // GridValues
     const std::uint64_t gradients = components == 3 ? 3 * samples : 0;
-    peak = std::max(peak, gridBytes + 4 * samples * static_cast<std::uint64_t>(components) + gradients + pagesSoFar + coded(components));
+    peak = std::max(peak, gridBytes + 4 * samples * static_cast<std::uint64_t>(components) + gradients + pagesSoFar +
+                              coded(components));
     pagesSoFar += coded(components);
   }
   return std::max(peak, 2 * pagesSoFar);  // serializing: the pages and the stream they make
 }
 
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
-  const auto samples = static_cast<std::uint64_t>(s.dims[0]) * static_cast<std::uint64_t>(s.dims[1]) * static_cast<std::uint64_t>(s.dims[2]);
+  const auto samples = static_cast<std::uint64_t>(s.dims[0]) * static_cast<std::uint64_t>(s.dims[1]) *
+                       static_cast<std::uint64_t>(s.dims[2]);
   const auto bricks = static_cast<std::uint64_t>((s.grid.pointsPerAxis() + 7) / 8);
   std::uint64_t bytes = 2 * samples, grid = 0;
   for (const LebChannel& c : s.channels) {
@@ -243,7 +262,8 @@ double LebStats::ratio() const {
 double LebStats::channelRatio(LebChannelKind kind) const {
   for (const LebChannelStats& c : channels)
     if (c.kind == kind)
-      return static_cast<double>(c.rawBytes) / static_cast<double>(c.compressedBytes() + (kind == LebChannelKind::Data ? headerBytes : 0));
+      return static_cast<double>(c.rawBytes) /
+             static_cast<double>(c.compressedBytes() + (kind == LebChannelKind::Data ? headerBytes : 0));
   return 0.0;
 }
 
@@ -261,7 +281,8 @@ LebStats lebStats(const LebStream& s) {
   for (const LebChannel& c : s.channels) {
     LebChannelStats cs;
     cs.kind = c.kind;
-    cs.rawBytes = st.volumePoints * static_cast<std::uint64_t>(c.components) * static_cast<std::uint64_t>(c.valueBits / 8);
+    cs.rawBytes =
+        st.volumePoints * static_cast<std::uint64_t>(c.components) * static_cast<std::uint64_t>(c.valueBits / 8);
     cs.descriptorBytes = c.descriptorBytes;
     cs.payloadBytes = c.payloadBytes();
     cs.codedValues = st.volumePoints * static_cast<std::uint64_t>(c.components);

@@ -13,7 +13,9 @@ std::string text(const GridPoint& p) {
 }
 
 void requireInside(const LebGrid& g, const GridPoint& p) {
-  if (!g.contains(p)) throw std::invalid_argument("point " + text(p) + " is outside the " + std::to_string(g.pointsPerAxis()) + "^3 grid");
+  if (!g.contains(p))
+    throw std::invalid_argument("point " + text(p) + " is outside the " + std::to_string(g.pointsPerAxis()) +
+                                "^3 grid");
 }
 
 void keepInside(const LebGrid& g, std::vector<GridPoint>& points) {
@@ -24,8 +26,9 @@ void keepInside(const LebGrid& g, std::vector<GridPoint>& points) {
 
 LebGrid makeLebGrid(int k) {
   if (k < 0 || k > kMaxLebK)
-    throw std::invalid_argument("LEB grid exponent " + std::to_string(k) + " is outside 0.." + std::to_string(kMaxLebK) + " (at most " +
-                                std::to_string((1 << kMaxLebK) + 1) + " points per axis)");
+    throw std::invalid_argument("LEB grid exponent " + std::to_string(k) + " is outside 0.." +
+                                std::to_string(kMaxLebK) + " (at most " + std::to_string((1 << kMaxLebK) + 1) +
+                                " points per axis)");
   return LebGrid{k};
 }
 
@@ -35,7 +38,8 @@ LebGrid lebGridCovering(const std::array<int, 3>& dims) {
   int k = 0;
   while (k <= kMaxLebK && (1 << k) + 1 < largest) ++k;
   if (k > kMaxLebK)
-    throw std::invalid_argument("a volume of " + std::to_string(largest) + " samples per axis needs more than the largest LEB grid (" +
+    throw std::invalid_argument("a volume of " + std::to_string(largest) +
+                                " samples per axis needs more than the largest LEB grid (" +
                                 std::to_string((1 << kMaxLebK) + 1) + " per axis)");
   return LebGrid{k};
 }
@@ -144,7 +148,8 @@ std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
     // Phase 0: the centres of the eight cubes of side h around p (the next, finer scale).
     const int half = h / 2;
     for (int m = 0; m < 8; ++m)
-      children.push_back({p[0] + ((m & 1) ? half : -half), p[1] + ((m & 2) ? half : -half), p[2] + ((m & 4) ? half : -half)});
+      children.push_back(
+          {p[0] + ((m & 1) ? half : -half), p[1] + ((m & 2) ? half : -half), p[2] + ((m & 4) ? half : -half)});
   }
   keepInside(g, children);
   return children;

@@ -49,7 +49,8 @@ struct LebGrid {
   // x + (N + 1) (y + (N + 1) z)
   std::uint64_t linearIndex(const GridPoint& p) const {
     const auto n = static_cast<std::uint64_t>(pointsPerAxis());
-    return static_cast<std::uint64_t>(p[0]) + n * (static_cast<std::uint64_t>(p[1]) + n * static_cast<std::uint64_t>(p[2]));
+    return static_cast<std::uint64_t>(p[0]) +
+           n * (static_cast<std::uint64_t>(p[1]) + n * static_cast<std::uint64_t>(p[2]));
   }
   // The inverse of linearIndex.
   GridPoint pointAt(std::uint64_t linear) const {
@@ -64,9 +65,9 @@ LebGrid makeLebGrid(int k);
 LebGrid lebGridCovering(const std::array<int, 3>& dims);
 
 struct LebPointClass {
-  int level = -1;  // -1 for a root corner
-  int scaleLog2 = 0;  // s, the point's scale is h = 2^s (k for a corner)
-  int phase = 0;      // the paper's numbering: odd axes - 1 (2 cube diagonal, 1 face diagonal, 0 cube edge)
+  int level = -1;        // -1 for a root corner
+  int scaleLog2 = 0;     // s, the point's scale is h = 2^s (k for a corner)
+  int phase = 0;         // the paper's numbering: odd axes - 1 (2 cube diagonal, 1 face diagonal, 0 cube edge)
   unsigned oddAxes = 0;  // bit a set when p_a / h is odd
 };
 LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p);

@@ -23,6 +23,7 @@ Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t 
 
 // The page's deltas (each fits an int16) placed at their positions: 2^pageBits x components entries, 0 for the padding
 // and for indices past the grid's last point. Throws StreamError for a corrupt page.
-std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page);
+std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
+                                              std::uint64_t page);
 
 }  // namespace voxref::ref

@@ -13,7 +13,9 @@ LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheB
 
 const LebChannel& LebReader::channel(LebChannelKind kind) const {
   const LebChannel* c = stream_->channel(kind);
-  if (!c) throw std::invalid_argument(std::string("the stream has no ") + (kind == LebChannelKind::Data ? "data" : "gradients") + " channel");
+  if (!c)
+    throw std::invalid_argument(std::string("the stream has no ") +
+                                (kind == LebChannelKind::Data ? "data" : "gradients") + " channel");
   return *c;
 }
 
@@ -25,16 +27,20 @@ LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
   if (pc.level >= 0) {
     const SplitEdge e = splitEdgeOf(p, pc.scaleLog2, pc.oddAxes);
     const Values a = valueAt(c, e.a), b = valueAt(c, e.b);
-    for (int k = 0; k < c.components; ++k) pred[static_cast<std::size_t>(k)] = predictMidpoint(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(k)]);
+    for (int k = 0; k < c.components; ++k)
+      pred[static_cast<std::size_t>(k)] =
+          predictMidpoint(a[static_cast<std::size_t>(k)], b[static_cast<std::size_t>(k)]);
   }
   Values v = pred;
   if (insideVolume(p, stream_->dims)) {
     const std::uint64_t page = h >> stream_->pageBits;
     const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
     const PageCache::Page deltas = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
-    const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * static_cast<std::size_t>(c.components);
+    const std::size_t at =
+        static_cast<std::size_t>(h - (page << stream_->pageBits)) * static_cast<std::size_t>(c.components);
     for (int k = 0; k < c.components; ++k)
-      v[static_cast<std::size_t>(k)] = reconstructSample(pred[static_cast<std::size_t>(k)], (*deltas)[at + static_cast<std::size_t>(k)], c.valueBits, c.isSigned);
+      v[static_cast<std::size_t>(k)] = reconstructSample(
+          pred[static_cast<std::size_t>(k)], (*deltas)[at + static_cast<std::size_t>(k)], c.valueBits, c.isSigned);
   }
   ++reconstructed_;
   memo_.emplace(h, v);
@@ -55,7 +61,8 @@ std::array<std::int8_t, 3> LebReader::gradient(const GridPoint& p) {
 std::vector<std::int32_t> LebReader::reconstructPage(LebChannelKind kind, std::uint64_t page) {
   const LebChannel& c = channel(kind);
   if (page >= stream_->pageCount())
-    throw std::invalid_argument("page " + std::to_string(page) + " is outside the stream's " + std::to_string(stream_->pageCount()) + " pages");
+    throw std::invalid_argument("page " + std::to_string(page) + " is outside the stream's " +
+                                std::to_string(stream_->pageCount()) + " pages");
   memo_.clear();
   const std::size_t comps = static_cast<std::size_t>(c.components);
   std::vector<std::int32_t> out((std::size_t{1} << stream_->pageBits) * comps, 0);

@@ -13,7 +13,9 @@ std::uint64_t pagesFor(const LebGrid& g, int pageBits) {
   return (g.pointCount() + per - 1) / per;
 }
 
-std::string dimsText(const Dims3& d) { return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]); }
+std::string dimsText(const Dims3& d) {
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
 
 }  // namespace
 
@@ -30,7 +32,8 @@ const LebChannel* LebStream::channel(LebChannelKind kind) const {
   return nullptr;
 }
 
-std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, const std::vector<LebChannelPayload>& channels) {
+std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits,
+                               const std::vector<LebChannelPayload>& channels) {
   // FORMAT.md section 1: the header; the total size is patched in at the end.
   ByteWriter w;
   w.bytes("VXLB", 4);
@@ -78,16 +81,19 @@ LebStream parseLebStream(std::string bytes) {
   // Section 1: header.
   if (r.take(4, "magic") != std::string_view("VXLB", 4)) r.fail(0, "magic: expected 'VXLB' (not an LEB stream)");
   r.need(kLebHeaderBytes - 4, "header");
-  if (!crc32Matches(b.substr(0, 32), static_cast<std::uint32_t>(loadLe(b.data() + 32, 4)))) r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
+  if (!crc32Matches(b.substr(0, 32), static_cast<std::uint32_t>(loadLe(b.data() + 32, 4))))
+    r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
   r.le<std::uint16_t>("version", 1, 1);
   const std::size_t bitsAt = r.offset();
   s.sampleBits = r.le<std::uint8_t>("sample_bits");
-  if (s.sampleBits != 8 && s.sampleBits != 16) r.fail(bitsAt, "sample_bits: expected 8 or 16, got " + std::to_string(s.sampleBits));
+  if (s.sampleBits != 8 && s.sampleBits != 16)
+    r.fail(bitsAt, "sample_bits: expected 8 or 16, got " + std::to_string(s.sampleBits));
   s.grid = LebGrid{r.le<std::uint8_t>("k", 0, kMaxLebK)};
-  for (int a = 0; a < 3; ++a) s.dims[a] = static_cast<int>(r.le<std::uint32_t>("extent", 1, static_cast<std::uint64_t>(s.grid.pointsPerAxis())));
+  for (int a = 0; a < 3; ++a)
+    s.dims[a] = static_cast<int>(r.le<std::uint32_t>("extent", 1, static_cast<std::uint64_t>(s.grid.pointsPerAxis())));
   if (lebGridCovering(s.dims).k != s.grid.k)
-    r.fail(7, "k: " + std::to_string(s.grid.k) + " is not the smallest grid covering " + dimsText(s.dims) + " (expected " +
-                  std::to_string(lebGridCovering(s.dims).k) + ")");
+    r.fail(7, "k: " + std::to_string(s.grid.k) + " is not the smallest grid covering " + dimsText(s.dims) +
+                  " (expected " + std::to_string(lebGridCovering(s.dims).k) + ")");
   s.pageBits = r.le<std::uint8_t>("page_bits", kMinLebPageBits, kMaxLebPageBits);
   const int channelCount = r.le<std::uint8_t>("channel_count", 1, 2);
   r.le<std::uint16_t>("reserved", 0, 0);
@@ -95,8 +101,8 @@ LebStream parseLebStream(std::string bytes) {
   const std::uint64_t total = r.le<std::uint64_t>("total_bytes");
   r.le<std::uint32_t>("header_crc");  // checked above
   if (total != b.size())
-    r.fail(totalAt, "total_bytes: the header describes " + std::to_string(total) + " bytes, the stream has " + std::to_string(b.size()) +
-                        (b.size() < total ? " (truncated)" : " (trailing bytes)"));
+    r.fail(totalAt, "total_bytes: the header describes " + std::to_string(total) + " bytes, the stream has " +
+                        std::to_string(b.size()) + (b.size() < total ? " (truncated)" : " (trailing bytes)"));
   const std::uint64_t pages = s.pageCount();
   // Section 2: channels.
   for (int ci = 0; ci < channelCount; ++ci) {
@@ -104,11 +110,13 @@ LebStream parseLebStream(std::string bytes) {
     c.descriptorOffset = r.offset();
     const std::size_t kindAt = r.offset();
     const int kind = r.le<std::uint8_t>("kind", 0, 1);
-    if (kind != ci) r.fail(kindAt, "kind: channel " + std::to_string(ci) + " must be " + (ci == 0 ? "0 (data)" : "1 (gradients)"));
+    if (kind != ci)
+      r.fail(kindAt, "kind: channel " + std::to_string(ci) + " must be " + (ci == 0 ? "0 (data)" : "1 (gradients)"));
     c.kind = static_cast<LebChannelKind>(kind);
     const bool data = c.kind == LebChannelKind::Data;
     c.components = r.le<std::uint8_t>("components", data ? 1 : 3, data ? 1 : 3);
-    c.valueBits = r.le<std::uint8_t>("value_bits", data ? static_cast<std::uint64_t>(s.sampleBits) : 8, data ? static_cast<std::uint64_t>(s.sampleBits) : 8);
+    c.valueBits = r.le<std::uint8_t>("value_bits", data ? static_cast<std::uint64_t>(s.sampleBits) : 8,
+                                     data ? static_cast<std::uint64_t>(s.sampleBits) : 8);
     c.isSigned = r.le<std::uint8_t>("signed", data ? 0 : 1, data ? 0 : 1) != 0;
     r.le<std::uint32_t>("page_count", pages, pages);
     const std::size_t payloadAt = r.offset();
@@ -128,17 +136,21 @@ LebStream parseLebStream(std::string bytes) {
       const std::uint64_t len = r.le<std::uint32_t>("page length");
       c.pageOffset[i + 1] = c.pageOffset[i] + len;
       if (c.pageOffset[i + 1] > payload)
-        r.fail(lengthsAt + 4 * i, "page length: page " + std::to_string(i) + " ends at byte " + std::to_string(c.pageOffset[i + 1]) +
-                                      " of the payload, past its end (" + std::to_string(payload) + " bytes)");
+        r.fail(lengthsAt + 4 * i, "page length: page " + std::to_string(i) + " ends at byte " +
+                                      std::to_string(c.pageOffset[i + 1]) + " of the payload, past its end (" +
+                                      std::to_string(payload) + " bytes)");
     }
     if (c.pageOffset.back() != payload)
-      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " + std::to_string(c.pageOffset.back()));
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " +
+                            std::to_string(c.pageOffset.back()));
     // Every delta costs at least one bit (no code is shorter), so a stream too short for its
     // volume is refused here, before a decoder allocates anything for that volume.
-    const std::uint64_t deltas = static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
+    const std::uint64_t deltas =
+        static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
     if (payload < (deltas + 7) / 8)
-      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " + std::to_string(deltas) + " deltas of a " +
-                            dimsText(s.dims) + " volume (at least one bit each)");
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " +
+                            std::to_string(deltas) + " deltas of a " + dimsText(s.dims) +
+                            " volume (at least one bit each)");
     c.pageCrc.resize(static_cast<std::size_t>(pages));
     for (std::uint64_t i = 0; i < pages; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
     const std::size_t crcAt = r.offset();
@@ -147,7 +159,8 @@ LebStream parseLebStream(std::string bytes) {
     c.descriptorBytes = r.offset() - c.descriptorOffset;
     c.payloadOffset = r.offset();
     if (payload > r.remaining())
-      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes of pages, the stream has " + std::to_string(r.remaining()) + " left");
+      r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes of pages, the stream has " +
+                            std::to_string(r.remaining()) + " left");
     r.take(static_cast<std::size_t>(payload), "pages");
     s.channels.push_back(std::move(c));
   }

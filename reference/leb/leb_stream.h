@@ -20,8 +20,8 @@
 #include <vector>
 
 #include "reference/common/volume.h"
-#include "reference/leb/leb_grid.h"
 #include "reference/leb/lead1_coder.h"
+#include "reference/leb/leb_grid.h"
 
 namespace voxref::ref {
 
@@ -42,7 +42,7 @@ struct LebChannel {
 };
 
 struct LebStream {
-  std::string bytes;  // the whole stream
+  std::string bytes;    // the whole stream
   Dims3 dims{0, 0, 0};  // the original volume; the grid covers it (padding beyond)
   int sampleBits = 8;
   LebGrid grid;
@@ -65,7 +65,8 @@ struct LebChannelPayload {
   Lead1Code code;
   std::vector<std::string> pages;
 };
-std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, const std::vector<LebChannelPayload>& channels);
+std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits,
+                               const std::vector<LebChannelPayload>& channels);
 
 // Throws StreamError. Takes the bytes by value: the stream keeps them.
 LebStream parseLebStream(std::string bytes);

@@ -20,7 +20,8 @@ inline std::int32_t predictMidpoint(std::int32_t a, std::int32_t b) { return (a 
 inline std::int32_t wrapSigned(std::int32_t x, int bits) {
   const std::uint32_t mask = (bits == 32) ? ~0u : ((1u << bits) - 1);
   const std::uint32_t m = static_cast<std::uint32_t>(x) & mask;
-  return (m >> (bits - 1)) ? static_cast<std::int32_t>(m) - static_cast<std::int32_t>(1u << bits) : static_cast<std::int32_t>(m);
+  return (m >> (bits - 1)) ? static_cast<std::int32_t>(m) - static_cast<std::int32_t>(1u << bits)
+                           : static_cast<std::int32_t>(m);
 }
 
 // A sample of `bits` bits (unsigned, or two's complement when isSigned) as the int32 the predictor
@@ -29,7 +30,9 @@ inline std::int32_t wrapSample(std::int32_t x, int bits, bool isSigned) {
   return isSigned ? wrapSigned(x, bits) : static_cast<std::int32_t>(static_cast<std::uint32_t>(x) & ((1u << bits) - 1));
 }
 
-inline std::int32_t predictionDelta(std::int32_t value, std::int32_t prediction, int bits) { return wrapSigned(value - prediction, bits); }
+inline std::int32_t predictionDelta(std::int32_t value, std::int32_t prediction, int bits) {
+  return wrapSigned(value - prediction, bits);
+}
 inline std::int32_t reconstructSample(std::int32_t prediction, std::int32_t delta, int bits, bool isSigned) {
   return wrapSample(prediction + delta, bits, isSigned);
 }

@@ -31,9 +31,9 @@ Combination::Combination(const SparseGrid& grid) : level_(grid.spec().level), bo
     for (int c = 0; c <= (1 << l[2]); ++c)
       for (int b = 0; b <= (1 << l[1]); ++b)
         for (int a = 0; a <= (1 << l[0]); ++a)
-          g.values.at(a, b, c) = grid.nodalAt({static_cast<std::int64_t>(a) << (n - l[0]),
-                                               static_cast<std::int64_t>(b) << (n - l[1]),
-                                               static_cast<std::int64_t>(c) << (n - l[2])});
+          g.values.at(a, b, c) =
+              grid.nodalAt({static_cast<std::int64_t>(a) << (n - l[0]), static_cast<std::int64_t>(b) << (n - l[1]),
+                            static_cast<std::int64_t>(c) << (n - l[2])});
     if (shape.coefficient > 0) ++positiveCount_;
     grids_.push_back(std::move(g));
   }

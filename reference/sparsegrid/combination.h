@@ -26,8 +26,8 @@ namespace voxref::ref {
 
 struct ComponentGrid {
   Levels3 levels{};
-  int coefficient = 0;     // +1 or -2
-  Volume<double> values;   // (2^l1 + 1) x (2^l2 + 1) x (2^l3 + 1) nodal values
+  int coefficient = 0;    // +1 or -2
+  Volume<double> values;  // (2^l1 + 1) x (2^l2 + 1) x (2^l3 + 1) nodal values
 };
 
 // Levels and coefficients only (no values): cheap, for counting and memory tables.

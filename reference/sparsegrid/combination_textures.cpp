@@ -93,10 +93,12 @@ CombinationTextures buildCombinationTextures(const Combination& combination, con
       for (int y = 0; y < d[1]; ++y)
         for (int x = 0; x < d[0]; ++x) {
           const double v = scaled ? factor * g.values.at(x, y, z) / combination.positiveCount() : g.values.at(x, y, z);
-          codes[static_cast<std::size_t>(x) + static_cast<std::size_t>(full[0]) * (y + static_cast<std::size_t>(full[1]) * z)] =
+          codes[static_cast<std::size_t>(x) +
+                static_cast<std::size_t>(full[0]) * (y + static_cast<std::size_t>(full[1]) * z)] =
               encodeTexel(options.format, v);
         }
-    const auto bx = axisBricks(g.levels[0], full[0], options.maxExtent), by = axisBricks(g.levels[1], full[1], options.maxExtent),
+    const auto bx = axisBricks(g.levels[0], full[0], options.maxExtent),
+               by = axisBricks(g.levels[1], full[1], options.maxExtent),
                bz = axisBricks(g.levels[2], full[2], options.maxExtent);
     for (const AxisBrick& z : bz)
       for (const AxisBrick& y : by)
@@ -115,9 +117,11 @@ CombinationTextures buildCombinationTextures(const Combination& combination, con
             for (int k = 0; k < z.extent; ++k)
               for (int j = 0; j < y.extent; ++j)
                 for (int i = 0; i < x.extent; ++i)
-                  t.codes[static_cast<std::size_t>(i) + static_cast<std::size_t>(x.extent) * (j + static_cast<std::size_t>(y.extent) * k)] =
+                  t.codes[static_cast<std::size_t>(i) +
+                          static_cast<std::size_t>(x.extent) * (j + static_cast<std::size_t>(y.extent) * k)] =
                       codes[static_cast<std::size_t>(x.origin + i) +
-                            static_cast<std::size_t>(full[0]) * ((y.origin + j) + static_cast<std::size_t>(full[1]) * (z.origin + k))];
+                            static_cast<std::size_t>(full[0]) *
+                                ((y.origin + j) + static_cast<std::size_t>(full[1]) * (z.origin + k))];
           }
           bricksOfGrid[gi].push_back(static_cast<int>(out.textures.size()));
           out.textures.push_back(std::move(t));
@@ -135,7 +139,8 @@ CombinationTextures buildCombinationTextures(const Combination& combination, con
 
 std::size_t textureBytes(const CombinationTextures& textures) {
   std::size_t bytes = 0;
-  for (const GridTexture& t : textures.textures) bytes += t.codes.size() * static_cast<std::size_t>(bytesPerTexel(textures.format));
+  for (const GridTexture& t : textures.textures)
+    bytes += t.codes.size() * static_cast<std::size_t>(bytesPerTexel(textures.format));
   return bytes;
 }
 

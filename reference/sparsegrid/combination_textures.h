@@ -30,9 +30,9 @@
 // fit are one brick with origin 0 and the same bits as without bricking.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
-#include <array>
 #include <optional>
 #include <string_view>
 #include <vector>
@@ -57,7 +57,7 @@ struct GridTexture {
   std::array<int, 3> origin{};       // first texel of the brick in the grid's texture
   std::array<int, 3> cellLo{};       // node coordinates served: cellLo <= c < cellHi per axis
   std::array<int, 3> cellHi{};
-  int grid = 0;                      // index of the component grid (combination.h order)
+  int grid = 0;  // index of the component grid (combination.h order)
 };
 
 // True when the brick serves node coordinate c (per axis: cellLo <= c < cellHi).

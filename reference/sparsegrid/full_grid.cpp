@@ -25,7 +25,8 @@ Volume<double> extractFullGrid(const SparseGrid& grid, std::size_t memoryLimitBy
     for (int k = 0; k < s.count[2]; ++k)
       for (int j = 0; j < s.count[1]; ++j)
         for (int i = 0; i < s.count[0]; ++i, ++idx)
-          full.at(static_cast<int>(latticeCoordinate(n, s.levels[0], i)), static_cast<int>(latticeCoordinate(n, s.levels[1], j)),
+          full.at(static_cast<int>(latticeCoordinate(n, s.levels[0], i)),
+                  static_cast<int>(latticeCoordinate(n, s.levels[1], j)),
                   static_cast<int>(latticeCoordinate(n, s.levels[2], k))) = grid.surpluses()[idx];
   }
   dehierarchizeFullGrid(full, grid.spec().boundary);

@@ -91,9 +91,9 @@ ValueGradient SparseGrid::evaluate(glm::dvec3 p) const {
           const HatTerm& X = hx.terms[tx];
           const HatTerm& Y = hy.terms[ty];
           const HatTerm& Z = hz.terms[tz];
-          const double coef =
-              surplus_[s.offset + static_cast<std::size_t>(X.index) +
-                       static_cast<std::size_t>(s.count[0]) * (Y.index + static_cast<std::size_t>(s.count[1]) * Z.index)];
+          const double coef = surplus_[s.offset + static_cast<std::size_t>(X.index) +
+                                       static_cast<std::size_t>(s.count[0]) *
+                                           (Y.index + static_cast<std::size_t>(s.count[1]) * Z.index)];
           out.value += coef * (X.value * Y.value * Z.value);
           if constexpr (WithGradient) {
             out.gradient.x += coef * (X.slope * Y.value * Z.value);

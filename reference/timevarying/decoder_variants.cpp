@@ -6,16 +6,21 @@ namespace voxref::ref {
 
 std::string_view name(DecoderVariant v) {
   switch (v) {
-    case DecoderVariant::Literal: return "literal";
-    case DecoderVariant::Paper: return "paper";
-    case DecoderVariant::TexelCentre: return "texel_centre";
-    case DecoderVariant::TexelFetch: return "texel_fetch";
+    case DecoderVariant::Literal:
+      return "literal";
+    case DecoderVariant::Paper:
+      return "paper";
+    case DecoderVariant::TexelCentre:
+      return "texel_centre";
+    case DecoderVariant::TexelFetch:
+      return "texel_fetch";
   }
   return "?";
 }
 
 std::optional<DecoderVariant> parseDecoderVariant(std::string_view s) {
-  for (DecoderVariant v : {DecoderVariant::Literal, DecoderVariant::Paper, DecoderVariant::TexelCentre, DecoderVariant::TexelFetch})
+  for (DecoderVariant v :
+       {DecoderVariant::Literal, DecoderVariant::Paper, DecoderVariant::TexelCentre, DecoderVariant::TexelFetch})
     if (name(v) == s) return v;
   return std::nullopt;
 }

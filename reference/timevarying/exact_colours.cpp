@@ -6,14 +6,17 @@
 namespace voxref::ref {
 namespace {
 
-bool insideUnitCube(const glm::dvec3& p) { return p.x >= 0 && p.y >= 0 && p.z >= 0 && p.x <= 1 && p.y <= 1 && p.z <= 1; }
+bool insideUnitCube(const glm::dvec3& p) {
+  return p.x >= 0 && p.y >= 0 && p.z >= 0 && p.x <= 1 && p.y <= 1 && p.z <= 1;
+}
 
 }  // namespace
 
 Rgba8 inputColour(const TimeSeries& input, const TransferFunction& tf, int step, const glm::dvec3& p) {
   std::size_t at = 0;
   for (int a = 2; a >= 0; --a)
-    at = at * static_cast<std::size_t>(input.side) + static_cast<std::size_t>(std::min(static_cast<int>(std::floor(p[a] * input.side)), input.side - 1));
+    at = at * static_cast<std::size_t>(input.side) +
+         static_cast<std::size_t>(std::min(static_cast<int>(std::floor(p[a] * input.side)), input.side - 1));
   return tf(input.steps[static_cast<std::size_t>(step)][at]);
 }
 

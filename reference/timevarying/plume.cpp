@@ -31,7 +31,7 @@ TimeSeries dischargePlume(const PlumeOptions& o) {
     std::vector<Puff> airborne;
     for (Puff p : puffs) {
       p.x += 2.6 * scale * (0.25 + p.z / n);  // current along +x, weaker near the seabed
-      p.y += 0.35 * scale;                      // a slight cross drift
+      p.y += 0.35 * scale;                    // a slight cross drift
       p.z -= p.settling;
       p.sigma = std::sqrt(p.sigma * p.sigma + 0.35 * scale * scale);
       const double mass = 1.0 / (p.sigma * p.sigma * p.sigma);
@@ -52,9 +52,12 @@ TimeSeries dischargePlume(const PlumeOptions& o) {
     }
     puffs = std::move(airborne);
     for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) c[static_cast<std::size_t>(x) + static_cast<std::size_t>(n) * y] += deposit[static_cast<std::size_t>(x) + static_cast<std::size_t>(n) * y];
+      for (int x = 0; x < n; ++x)
+        c[static_cast<std::size_t>(x) + static_cast<std::size_t>(n) * y] +=
+            deposit[static_cast<std::size_t>(x) + static_cast<std::size_t>(n) * y];
     std::vector<std::uint8_t> vol(c.size());
-    for (std::size_t i = 0; i < c.size(); ++i) vol[i] = static_cast<std::uint8_t>(std::min(255.0, std::floor(o.gain * c[i])));
+    for (std::size_t i = 0; i < c.size(); ++i)
+      vol[i] = static_cast<std::uint8_t>(std::min(255.0, std::floor(o.gain * c[i])));
     s.steps.push_back(std::move(vol));
   }
   return s;

@@ -17,7 +17,7 @@
 namespace voxref::ref {
 
 struct PlumeOptions {
-  int side = 128;      // volumes are side^3, a power of two >= 8
+  int side = 128;  // volumes are side^3, a power of two >= 8
   int steps = 36;
   double gain = 40.0;  // concentration -> value; larger gains give less sparse volumes
 };

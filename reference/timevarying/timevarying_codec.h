@@ -65,8 +65,8 @@ struct TimeVaryingOptions {
   int level = 4;  // s: 2^s coarse cells per axis, 1 <= s <= log2(side) - 1
   IndexEncoding encoding = IndexEncoding::NormalizedRgba8;
   AlphaOnePolicy alphaOne = AlphaOnePolicy::Refine;
-  int hashBits = 64;                // truncate the block hash (tests force collisions with few bits)
-  int maxTextureExtent = 2048;      // GL 4.5's guaranteed GL_MAX_3D_TEXTURE_SIZE
+  int hashBits = 64;            // truncate the block hash (tests force collisions with few bits)
+  int maxTextureExtent = 2048;  // GL 4.5's guaranteed GL_MAX_3D_TEXTURE_SIZE
   // The paper's layout (section 5.2): both textures are side^3, so S = r index slots and B = n
   // block slots per axis; the appendix shader assumes it. CapacityError when T > r^3 or the blocks
   // exceed n^3.
@@ -96,15 +96,19 @@ struct RefinementTexture {
 struct EncodeStats {
   std::size_t homogeneousCells = 0, refinedCells = 0;
   std::size_t distinctBlocks = 0;
-  std::size_t hashHits = 0;        // hash hits confirmed equal by the full comparison (shared blocks)
-  std::size_t hashCollisions = 0;  // hash hits whose blocks differed
-  std::size_t alphaOneCells = 0;   // homogeneous cells whose colour has alpha 255
+  std::size_t hashHits = 0;         // hash hits confirmed equal by the full comparison (shared blocks)
+  std::size_t hashCollisions = 0;   // hash hits whose blocks differed
+  std::size_t alphaOneCells = 0;    // homogeneous cells whose colour has alpha 255
   std::size_t indexBytes = 0;       // T n^3 texels (the paper counts only the used slots)
   std::size_t refinementBytes = 0;  // blocks * r^3 * 4
   std::size_t indexBytesAllocated = 0, refinementBytesAllocated = 0;
-  std::size_t inputVoxels = 0;     // T X Y Z of the original extents: ratios exclude the padding
-  double ratioAgainst4Bytes() const { return 4.0 * static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes); }
-  double ratioAgainst1Byte() const { return static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes); }
+  std::size_t inputVoxels = 0;  // T X Y Z of the original extents: ratios exclude the padding
+  double ratioAgainst4Bytes() const {
+    return 4.0 * static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes);
+  }
+  double ratioAgainst1Byte() const {
+    return static_cast<double>(inputVoxels) / static_cast<double>(indexBytes + refinementBytes);
+  }
 };
 
 struct TimeVaryingTextures {
@@ -124,13 +128,15 @@ class CapacityError : public std::length_error {
 
 // Throws std::invalid_argument for a level outside 1..log2(side)-1 or an empty series, and
 // CapacityError as above.
-TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFunction& tf, const TimeVaryingOptions& options);
+TimeVaryingTextures encodeTimeVarying(const TimeSeries& series, const TransferFunction& tf,
+                                      const TimeVaryingOptions& options);
 
 // `--level auto`: encodes at every level and returns the one with the fewest allocated texture
 // bytes (index + refinement textures as stored, unused slots included), which is the smallest
 // .vxtv file (its other sections do not depend on the level); ties go to the lower level. Levels
 // that exceed a capacity are skipped.
-TimeVaryingTextures encodeTimeVaryingAutoLevel(const TimeSeries& series, const TransferFunction& tf, TimeVaryingOptions options);
+TimeVaryingTextures encodeTimeVaryingAutoLevel(const TimeSeries& series, const TransferFunction& tf,
+                                               TimeVaryingOptions options);
 
 // Slot positions (in slots) of time step t and of block k.
 std::array<int, 3> indexSlot(const TimeVaryingLayout& layout, int t);
@@ -143,7 +149,8 @@ std::array<int, 3> paperIndexOrigin(int t, int di, int dr);
 // True when the index texel at `texel` (4 channels) carries the refinement flag (alpha at maximum).
 bool isRefinementFlag(IndexEncoding encoding, const std::uint32_t* texel);
 // The block slot coordinates an index texel addresses (integer rounding of the stored origin).
-std::array<int, 3> blockOfIndexTexel(const TimeVaryingLayout& layout, IndexEncoding encoding, const std::uint32_t* texel);
+std::array<int, 3> blockOfIndexTexel(const TimeVaryingLayout& layout, IndexEncoding encoding,
+                                     const std::uint32_t* texel);
 // The RGBA8 colour an index texel stores for a homogeneous cell.
 Rgba8 colourOfIndexTexel(IndexEncoding encoding, const std::uint32_t* texel);
 

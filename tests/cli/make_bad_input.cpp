@@ -61,7 +61,8 @@ long long number(const std::string& s) {
 std::size_t offsetIn(const std::string& bytes, long long off, std::size_t width) {
   const long long at = off < 0 ? static_cast<long long>(bytes.size()) + off : off;
   if (at < 0 || static_cast<std::size_t>(at) + width > bytes.size())
-    die("offset " + std::to_string(off) + " (+" + std::to_string(width) + ") is outside the " + std::to_string(bytes.size()) + " bytes");
+    die("offset " + std::to_string(off) + " (+" + std::to_string(width) + ") is outside the " +
+        std::to_string(bytes.size()) + " bytes");
   return static_cast<std::size_t>(at);
 }
 
@@ -123,13 +124,15 @@ void applyOp(std::string& bytes, const std::string& op) {
   if (name == "truncate") {
     const long long n = number(arg);
     const long long keep = n < 0 ? static_cast<long long>(bytes.size()) + n : n;
-    if (keep < 0 || static_cast<std::size_t>(keep) > bytes.size()) die("cannot keep " + std::to_string(keep) + " of " + std::to_string(bytes.size()) + " bytes");
+    if (keep < 0 || static_cast<std::size_t>(keep) > bytes.size())
+      die("cannot keep " + std::to_string(keep) + " of " + std::to_string(bytes.size()) + " bytes");
     bytes.resize(static_cast<std::size_t>(keep));
   } else if (name == "u8" || name == "u16" || name == "u32" || name == "u64") {
     const std::size_t eq = arg.find('=');
     if (eq == std::string::npos) die(op + ": expected OFF=V");
     const std::size_t width = name == "u8" ? 1 : name == "u16" ? 2 : name == "u32" ? 4 : 8;
-    storeLe(bytes, number(arg.substr(0, eq)), width, static_cast<std::uint64_t>(std::stoull(arg.substr(eq + 1), nullptr, 0)));
+    storeLe(bytes, number(arg.substr(0, eq)), width,
+            static_cast<std::uint64_t>(std::stoull(arg.substr(eq + 1), nullptr, 0)));
   } else if (name == "flip") {
     const std::size_t at = offsetIn(bytes, number(arg), 1);
     bytes[at] = static_cast<char>(~static_cast<unsigned char>(bytes[at]));
@@ -139,7 +142,8 @@ void applyOp(std::string& bytes, const std::string& op) {
     const long long begin = number(p[0]), endArg = number(p[1]);
     const long long end = endArg <= 0 ? static_cast<long long>(bytes.size()) + endArg : endArg;
     if (begin < 0 || end < begin || static_cast<std::size_t>(end) > bytes.size()) die(op + ": range outside the bytes");
-    const uLong c = crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(bytes.data() + begin), static_cast<uInt>(end - begin));
+    const uLong c = crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(bytes.data() + begin),
+                          static_cast<uInt>(end - begin));
     storeLe(bytes, number(p[2]), 4, c);
   } else if (name == "append") {
     bytes += arg;
@@ -197,7 +201,8 @@ int main(int argc, char** argv) {
     if (path.size() >= sizeof addr.sun_path) die("socket path too long: " + path);
     path.copy(addr.sun_path, path.size());
     const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
-    if (fd < 0 || ::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0) die("cannot make a socket at " + path);
+    if (fd < 0 || ::bind(fd, reinterpret_cast<const sockaddr*>(&addr), sizeof addr) != 0)
+      die("cannot make a socket at " + path);
     ::close(fd);
     return 0;
   }

@@ -25,9 +25,9 @@
 // Prints every violation; exits 1 if there is any, 2 on bad usage or an unreadable file.
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
-#include <iostream>
 #include <string>
 #include <vector>
 
@@ -87,21 +87,36 @@ int main(int argc, char** argv) {
   std::string sameAs;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--profile" && i + 1 < argc) profile = argv[++i];
-    else if (a == "--require-exact-pass") exactPass = true;
-    else if (a == "--require-no-fail") noFail = true;
-    else if (a == "--require-explained-envelope") explained = true;
-    else if (a == "--expect-finding" && i + 1 < argc) findings.push_back(argv[++i]);
-    else if (a == "--min-cases" && i + 1 < argc) minCases = std::stoul(argv[++i]);
-    else if (a == "--expect-status" && i + 1 < argc) expectStatus.insert(splitAt(argv[++i]));
-    else if (a == "--expect-stderr" && i + 1 < argc) expectStderr.insert(splitAt(argv[++i]));
-    else if (a == "--expect-interrupted") expectInterrupted = true;
-    else if (a == "--expect-envelope-alone") envelopeAlone = true;
-    else if (a == "--same-results-as" && i + 1 < argc) sameAs = argv[++i];
-    else if (a == "--expect-regressed" && i + 1 < argc) expectRegressed.push_back(argv[++i]);
-    else if (a == "--expect-fixed" && i + 1 < argc) expectFixed.push_back(argv[++i]);
-    else if (a == "--require-failures-with-finding" && i + 1 < argc) failuresWithFinding.push_back(argv[++i]);
-    else if (a == "--expect-environment" && i + 1 < argc) expectEnvironment.insert(splitAt(argv[++i]));
+    if (a == "--profile" && i + 1 < argc)
+      profile = argv[++i];
+    else if (a == "--require-exact-pass")
+      exactPass = true;
+    else if (a == "--require-no-fail")
+      noFail = true;
+    else if (a == "--require-explained-envelope")
+      explained = true;
+    else if (a == "--expect-finding" && i + 1 < argc)
+      findings.push_back(argv[++i]);
+    else if (a == "--min-cases" && i + 1 < argc)
+      minCases = std::stoul(argv[++i]);
+    else if (a == "--expect-status" && i + 1 < argc)
+      expectStatus.insert(splitAt(argv[++i]));
+    else if (a == "--expect-stderr" && i + 1 < argc)
+      expectStderr.insert(splitAt(argv[++i]));
+    else if (a == "--expect-interrupted")
+      expectInterrupted = true;
+    else if (a == "--expect-envelope-alone")
+      envelopeAlone = true;
+    else if (a == "--same-results-as" && i + 1 < argc)
+      sameAs = argv[++i];
+    else if (a == "--expect-regressed" && i + 1 < argc)
+      expectRegressed.push_back(argv[++i]);
+    else if (a == "--expect-fixed" && i + 1 < argc)
+      expectFixed.push_back(argv[++i]);
+    else if (a == "--require-failures-with-finding" && i + 1 < argc)
+      failuresWithFinding.push_back(argv[++i]);
+    else if (a == "--expect-environment" && i + 1 < argc)
+      expectEnvironment.insert(splitAt(argv[++i]));
     else {
       std::cerr << "check_results: unknown option " << a << "\n";
       return 2;
@@ -127,18 +142,22 @@ int main(int argc, char** argv) {
   for (const auto& c : cases) {
     const std::string id = c["id"];
     const std::string status = c["status"];
-    if (noFail && (status == "fail" || status == "crash" || status == "timeout")) violation(id + " is " + status + ": " + c["message"].get<std::string>());
+    if (noFail && (status == "fail" || status == "crash" || status == "timeout"))
+      violation(id + " is " + status + ": " + c["message"].get<std::string>());
     if (const auto want = expectStatus.find(id); want != expectStatus.end()) {
-      if (status != want->second) violation(id + " is " + status + ", expected " + want->second + ": " + c["message"].get<std::string>());
+      if (status != want->second)
+        violation(id + " is " + status + ", expected " + want->second + ": " + c["message"].get<std::string>());
       expectStatus.erase(want);
       if (const auto text = expectStderr.find(id); text != expectStderr.end()) {
         if (c.value("stderr", "").find(text->second) == std::string::npos)
-          violation(id + ": stderr kept does not contain '" + text->second + "': " + c.value("stderr", "").substr(0, 300));
+          violation(id + ": stderr kept does not contain '" + text->second +
+                    "': " + c.value("stderr", "").substr(0, 300));
         expectStderr.erase(text);
       }
       continue;
     }
-    if (status != "pass" && c.value("message", "").empty()) violation(id + " is " + status + " and states no reason (empty message)");
+    if (status != "pass" && c.value("message", "").empty())
+      violation(id + " is " + status + " and states no reason (empty message)");
     for (const std::string& want : failuresWithFinding) {
       if (status != "fail") continue;
       bool carried = false;
@@ -158,19 +177,24 @@ int main(int argc, char** argv) {
       const auto& f = oracles["envelope"]["figures"];
       if (f.value("unexplained_failures", 0) != 0 || f.value("unexplained_warnings", 0) != 0 ||
           (!f.contains("unexplained_failures") && (f.value("fail", 0) != 0 || f.value("quality_warning", 0) != 0)))
-        violation(id + ": envelope failures not explained by a named departure: " + oracles["envelope"]["summary"].get<std::string>());
+        violation(id + ": envelope failures not explained by a named departure: " +
+                  oracles["envelope"]["summary"].get<std::string>());
     }
   }
   if (exactPass && exactRan == 0) violation("no case ran the exact oracle");
   for (const auto& [key, value] : expectEnvironment) {
     const auto& env = r["driver"]["environment"];
-    if (!env.contains(key) || env[key] != value) violation("driver.environment does not record " + key + "=" + value + ": " + env.dump());
+    if (!env.contains(key) || env[key] != value)
+      violation("driver.environment does not record " + key + "=" + value + ": " + env.dump());
     const std::string index = fileBytes(std::filesystem::path(argv[1]).parent_path() / "index.html");
-    if (index.find(key) == std::string::npos || index.find(value) == std::string::npos) violation("index.html does not show " + key + "=" + value);
+    if (index.find(key) == std::string::npos || index.find(value) == std::string::npos)
+      violation("index.html does not show " + key + "=" + value);
   }
-  if (const std::filesystem::path junit = std::filesystem::path(argv[1]).parent_path() / "junit.xml"; std::filesystem::exists(junit)) {
+  if (const std::filesystem::path junit = std::filesystem::path(argv[1]).parent_path() / "junit.xml";
+      std::filesystem::exists(junit)) {
     const std::string xml = fileBytes(junit);
-    if (xml.find("message=\"\"") != std::string::npos) violation("junit.xml has message=\"\": a case without its reason");
+    if (xml.find("message=\"\"") != std::string::npos)
+      violation("junit.xml has message=\"\": a case without its reason");
   }
   for (const std::string& want : findings) {
     bool seen = false;
@@ -182,15 +206,19 @@ int main(int argc, char** argv) {
   if (envelopeAlone) {
     const auto& p = r["driver"]["profile"];
     if (!p["name"].is_null()) violation("the run names profile " + p["name"].dump());
-    if (p.value("chosen", "").find("envelope oracle alone") == std::string::npos) violation("the run does not say it is judged by the envelope alone");
+    if (p.value("chosen", "").find("envelope oracle alone") == std::string::npos)
+      violation("the run does not say it is judged by the envelope alone");
     for (const auto& c : cases) {
       const auto& o = c["oracles"];
-      if (o.contains("exact") && o["exact"]["verdict"] != "not_run") violation(c["id"].get<std::string>() + ": the exact oracle ran without a profile");
-      if (!o.contains("envelope") || o["envelope"]["verdict"] == "not_run") violation(c["id"].get<std::string>() + ": the envelope oracle did not run");
+      if (o.contains("exact") && o["exact"]["verdict"] != "not_run")
+        violation(c["id"].get<std::string>() + ": the exact oracle ran without a profile");
+      if (!o.contains("envelope") || o["envelope"]["verdict"] == "not_run")
+        violation(c["id"].get<std::string>() + ": the envelope oracle did not run");
     }
   }
   for (const auto& [id, status] : expectStatus) violation(id + " did not run (expected " + status + ")");
-  for (const auto& [id, text] : expectStderr) violation(id + ": --expect-stderr needs --expect-status for the same case");
+  for (const auto& [id, text] : expectStderr)
+    violation(id + ": --expect-stderr needs --expect-status for the same case");
   auto listed = [&](const char* list, const std::string& id) {
     if (!r["baseline"].is_object()) return false;
     for (const auto& c : r["baseline"][list])
@@ -198,15 +226,19 @@ int main(int argc, char** argv) {
     return false;
   };
   for (const std::string& id : expectRegressed)
-    if (!listed("newly_failing", id) && !listed("newly_warning", id)) violation(id + " is not listed as regressed against the baseline");
+    if (!listed("newly_failing", id) && !listed("newly_warning", id))
+      violation(id + " is not listed as regressed against the baseline");
   for (const std::string& id : expectFixed)
     if (!listed("fixed", id)) violation(id + " is not listed as fixed against the baseline");
   if (!sameAs.empty()) {
     nlohmann::json other;
     if (!readJson(sameAs, other)) return 2;
     const auto& otherCases = other["cases"];
-    if (otherCases.size() != cases.size()) violation("the runs hold " + std::to_string(cases.size()) + " and " + std::to_string(otherCases.size()) + " cases");
-    const std::filesystem::path here = std::filesystem::path(argv[1]).parent_path(), there = std::filesystem::path(sameAs).parent_path();
+    if (otherCases.size() != cases.size())
+      violation("the runs hold " + std::to_string(cases.size()) + " and " + std::to_string(otherCases.size()) +
+                " cases");
+    const std::filesystem::path here = std::filesystem::path(argv[1]).parent_path(),
+                                there = std::filesystem::path(sameAs).parent_path();
     std::size_t images = 0;
     for (std::size_t i = 0; i < std::min(cases.size(), otherCases.size()); ++i) {
       const nlohmann::json a = stable(cases[i]), b = stable(otherCases[i]);
@@ -220,8 +252,10 @@ int main(int argc, char** argv) {
           violation(a["id"].get<std::string>() + ": image " + file.get<std::string>() + " differs between the runs");
       }
     }
-    std::cout << "check_results: compared with " << sameAs << ": " << images << " image file(s) compared byte for byte\n";
+    std::cout << "check_results: compared with " << sameAs << ": " << images
+              << " image file(s) compared byte for byte\n";
   }
-  std::cout << "check_results: " << cases.size() << " cases, " << exactRan << " with the exact oracle, " << violations << " violation(s)\n";
+  std::cout << "check_results: " << cases.size() << " cases, " << exactRan << " with the exact oracle, " << violations
+            << " violation(s)\n";
   return violations ? 1 : 0;
 }

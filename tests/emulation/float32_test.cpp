@@ -19,13 +19,13 @@ TEST(UnormToFloat, MultipliesByTheRoundedReciprocal) {
 }
 
 TEST(FloatToUnorm, HalfEvenAsLlvmpipeAndSoftpipeStoreUnorm8) {
-  EXPECT_EQ(floatToUnormHalfEven(0.5f, 8), 128u);            // 127.5: tie to even
-  EXPECT_EQ(floatToUnormHalfEven(1.5f / 255.0f, 8), 2u);     // measured on both drivers
-  EXPECT_EQ(floatToUnormHalfEven(2.5f / 255.0f, 8), 2u);     // measured on both drivers
+  EXPECT_EQ(floatToUnormHalfEven(0.5f, 8), 128u);         // 127.5: tie to even
+  EXPECT_EQ(floatToUnormHalfEven(1.5f / 255.0f, 8), 2u);  // measured on both drivers
+  EXPECT_EQ(floatToUnormHalfEven(2.5f / 255.0f, 8), 2u);  // measured on both drivers
   EXPECT_EQ(floatToUnormHalfEven(-0.25f, 8), 0u);
   EXPECT_EQ(floatToUnormHalfEven(7.0f, 8), 255u);
   EXPECT_EQ(floatToUnormHalfEven(std::nanf(""), 8), 0u);
-  EXPECT_EQ(floatToUnormHalfEven(0.5f, 12), 2048u);          // 2047.5: tie to even
+  EXPECT_EQ(floatToUnormHalfEven(0.5f, 12), 2048u);  // 2047.5: tie to even
 }
 
 TEST(FloatToUnorm, Unorm16RoundingDiffersBetweenDrivers) {
@@ -33,11 +33,12 @@ TEST(FloatToUnorm, Unorm16RoundingDiffersBetweenDrivers) {
   const float x = 0x1.0001p-17f;
   EXPECT_EQ(floatToUnormHalfEven(x, 16), 0u);
   EXPECT_EQ(floatToUnormHalfUp(x, 16), 1u);
-  for (std::uint32_t k = 0; k < 65536; k += 97) ASSERT_EQ(floatToUnormHalfUp(unormToFloat(k, 16), 16), k);  // reload is lossless
+  for (std::uint32_t k = 0; k < 65536; k += 97)
+    ASSERT_EQ(floatToUnormHalfUp(unormToFloat(k, 16), 16), k);  // reload is lossless
 }
 
 TEST(FloatToHalfTowardZero, TruncatesAndSaturates) {
-  EXPECT_EQ(floatToHalfTowardZero(0.3f), 0x34cc);   // measured on both drivers; RNE would give 0x34cd
+  EXPECT_EQ(floatToHalfTowardZero(0.3f), 0x34cc);  // measured on both drivers; RNE would give 0x34cd
   EXPECT_EQ(floatToHalfTowardZero(-0.3f), 0xb4cc);
   EXPECT_EQ(floatToHalfTowardZero(70000.0f), 0x7bff);  // measured: finite overflow saturates
   EXPECT_EQ(floatToHalfTowardZero(65504.0f), 0x7bff);

@@ -8,7 +8,8 @@ namespace {
 using ref::BlendEquation;
 using ref::FramebufferFormat;
 
-std::uint32_t blendAll(FramebufferFormat f, const PrecisionProfile& p, bool flush, std::initializer_list<std::pair<float, BlendEquation>> passes) {
+std::uint32_t blendAll(FramebufferFormat f, const PrecisionProfile& p, bool flush,
+                       std::initializer_list<std::pair<float, BlendEquation>> passes) {
   const BlendEmu b(f, p, flush, 8, 8);
   PixelState px = b.cleared();
   for (const auto& [src, eq] : passes) b.blend(px, src, eq);
@@ -33,14 +34,19 @@ TEST(BlendEmu, TenSmallAddsVanishPerPassButNotInATileCache) {
 }
 
 TEST(BlendEmu, SaturatingFixedPoint) {
-  EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, llvmpipe(), false, {{0.9f, BlendEquation::FuncAdd}, {0.9f, BlendEquation::FuncAdd}}), 255u);
+  EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, llvmpipe(), false,
+                     {{0.9f, BlendEquation::FuncAdd}, {0.9f, BlendEquation::FuncAdd}}),
+            255u);
   EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, llvmpipe(), false, {{0.5f, BlendEquation::FuncReverseSubtract}}), 0u);
-  EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, softpipe(), false, {{0.9f, BlendEquation::FuncAdd}, {0.9f, BlendEquation::FuncAdd}}), 255u);
+  EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, softpipe(), false,
+                     {{0.9f, BlendEquation::FuncAdd}, {0.9f, BlendEquation::FuncAdd}}),
+            255u);
   // dst - src, not src - dst: 200/255 - 100/255.
   EXPECT_EQ(blendAll(FramebufferFormat::RGBA8, llvmpipe(), false,
                      {{200 / 255.0f, BlendEquation::FuncAdd}, {100 / 255.0f, BlendEquation::FuncReverseSubtract}}),
             100u);
-  EXPECT_EQ(blendAll(FramebufferFormat::RGBA12, llvmpipe(), false, {{0.5f, BlendEquation::FuncAdd}}), 2048u);  // 2047.5: even
+  EXPECT_EQ(blendAll(FramebufferFormat::RGBA12, llvmpipe(), false, {{0.5f, BlendEquation::FuncAdd}}),
+            2048u);  // 2047.5: even
 }
 
 TEST(BlendEmu, HalfFloatAccumulation) {
@@ -67,10 +73,15 @@ TEST(BlendEmu, Unorm16StoreRounding) {
 }
 
 TEST(BlendEmu, Float32KeepsNegativesAndFlushesDenormalsOnLlvmpipe) {
-  const std::uint32_t code = blendAll(FramebufferFormat::RGBA32F, llvmpipe(), false, {{0.25f, BlendEquation::FuncReverseSubtract}});
+  const std::uint32_t code =
+      blendAll(FramebufferFormat::RGBA32F, llvmpipe(), false, {{0.25f, BlendEquation::FuncReverseSubtract}});
   EXPECT_EQ(std::bit_cast<float>(code), -0.25f);
-  EXPECT_EQ(std::bit_cast<float>(blendAll(FramebufferFormat::RGBA32F, llvmpipe(), false, {{0x1p-130f, BlendEquation::FuncAdd}})), 0.0f);
-  EXPECT_EQ(std::bit_cast<float>(blendAll(FramebufferFormat::RGBA32F, softpipe(), false, {{0x1p-130f, BlendEquation::FuncAdd}})), 0x1p-130f);
+  EXPECT_EQ(std::bit_cast<float>(
+                blendAll(FramebufferFormat::RGBA32F, llvmpipe(), false, {{0x1p-130f, BlendEquation::FuncAdd}})),
+            0.0f);
+  EXPECT_EQ(std::bit_cast<float>(
+                blendAll(FramebufferFormat::RGBA32F, softpipe(), false, {{0x1p-130f, BlendEquation::FuncAdd}})),
+            0x1p-130f);
 }
 
 TEST(BlendEmu, RefusesTargetsTheTileCacheModelDoesNotCover) {

@@ -27,13 +27,20 @@ TEST(ForceAllEffects, CombinationSameBitsAsPruned) {
     bool flush;
   };
   const State states[] = {
-      {ref::TexelFormat::R32F, ref::TextureSizing::Padded, ref::Filter::Nearest, ref::Wrap::ClampToEdge, ref::FramebufferFormat::RGBA32F, false},
-      {ref::TexelFormat::R16, ref::TextureSizing::Exact, ref::Filter::Nearest, ref::Wrap::ClampToBorder, ref::FramebufferFormat::RGBA16F, false},
-      {ref::TexelFormat::R8, ref::TextureSizing::Padded, ref::Filter::Nearest, ref::Wrap::Repeat, ref::FramebufferFormat::RGBA8, false},
-      {ref::TexelFormat::R16F, ref::TextureSizing::Exact, ref::Filter::Linear, ref::Wrap::ClampToEdge, ref::FramebufferFormat::RGBA32F, false},
-      {ref::TexelFormat::R32F, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::ClampToEdge, ref::FramebufferFormat::RGBA32F, true},
-      {ref::TexelFormat::R16, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::ClampToEdge, ref::FramebufferFormat::RGBA16, false},
-      {ref::TexelFormat::R8, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::Repeat, ref::FramebufferFormat::RGBA12, false},
+      {ref::TexelFormat::R32F, ref::TextureSizing::Padded, ref::Filter::Nearest, ref::Wrap::ClampToEdge,
+       ref::FramebufferFormat::RGBA32F, false},
+      {ref::TexelFormat::R16, ref::TextureSizing::Exact, ref::Filter::Nearest, ref::Wrap::ClampToBorder,
+       ref::FramebufferFormat::RGBA16F, false},
+      {ref::TexelFormat::R8, ref::TextureSizing::Padded, ref::Filter::Nearest, ref::Wrap::Repeat,
+       ref::FramebufferFormat::RGBA8, false},
+      {ref::TexelFormat::R16F, ref::TextureSizing::Exact, ref::Filter::Linear, ref::Wrap::ClampToEdge,
+       ref::FramebufferFormat::RGBA32F, false},
+      {ref::TexelFormat::R32F, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::ClampToEdge,
+       ref::FramebufferFormat::RGBA32F, true},
+      {ref::TexelFormat::R16, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::ClampToEdge,
+       ref::FramebufferFormat::RGBA16, false},
+      {ref::TexelFormat::R8, ref::TextureSizing::Padded, ref::Filter::Linear, ref::Wrap::Repeat,
+       ref::FramebufferFormat::RGBA12, false},
   };
   int compared = 0;
   for (const char* profileName : {"llvmpipe", "softpipe"})
@@ -43,8 +50,8 @@ TEST(ForceAllEffects, CombinationSameBitsAsPruned) {
       const PrecisionProfile& profile = *findProfile(profileName);
       const auto pruned = emulateCombination(textures, frame, sampler, s.fb, profile, {s.flush, 2, false});
       const auto forced = emulateCombination(textures, frame, sampler, s.fb, profile, {s.flush, 2, true});
-      SCOPED_TRACE(std::string(profileName) + " " + std::string(ref::name(s.texels)) + " " + std::string(ref::name(s.filter)) + " " +
-                   std::string(ref::name(s.fb)));
+      SCOPED_TRACE(std::string(profileName) + " " + std::string(ref::name(s.texels)) + " " +
+                   std::string(ref::name(s.filter)) + " " + std::string(ref::name(s.fb)));
       ASSERT_EQ(forced.planes.codes, pruned.planes.codes);
       ASSERT_EQ(forced.unmodelled, pruned.unmodelled);
       ++compared;
@@ -58,11 +65,11 @@ TEST(ForceAllEffects, TimeVaryingSameBitsAsPruned) {
   const ref::PlaneFrame frame = ref::orbitFrame(30, 20, 20, 20, 16);
   int compared = 0;
   for (const char* profileName : {"llvmpipe", "softpipe"})
-    for (ref::IndexEncoding enc : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16, ref::IndexEncoding::NormalizedFloat,
-                                   ref::IndexEncoding::BlockRgba8}) {
+    for (ref::IndexEncoding enc : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16,
+                                   ref::IndexEncoding::NormalizedFloat, ref::IndexEncoding::BlockRgba8}) {
       const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, tf, {3, enc});
-      for (ref::DecoderVariant v : {ref::DecoderVariant::Literal, ref::DecoderVariant::Paper, ref::DecoderVariant::TexelCentre,
-                                    ref::DecoderVariant::TexelFetch}) {
+      for (ref::DecoderVariant v : {ref::DecoderVariant::Literal, ref::DecoderVariant::Paper,
+                                    ref::DecoderVariant::TexelCentre, ref::DecoderVariant::TexelFetch}) {
         if (!ref::decoderIncompatibility(v, tex.layout, tex.index.encoding).empty()) continue;
         const PrecisionProfile& profile = *findProfile(profileName);
         SCOPED_TRACE(std::string(profileName) + " encoding " + std::to_string(static_cast<int>(enc)) + " variant " +
@@ -71,7 +78,8 @@ TEST(ForceAllEffects, TimeVaryingSameBitsAsPruned) {
         const EmulatedDecode forced = emulateDecodePlanes(tex, v, 1, frame, profile, 2, true);
         ASSERT_EQ(forced.colours.colours, pruned.colours.colours);
         for (std::size_t i = 0; i < pruned.samples.size(); ++i)
-          ASSERT_EQ(std::memcmp(forced.samples[i].value.data(), pruned.samples[i].value.data(), sizeof(float) * 4), 0) << "sample " << i;
+          ASSERT_EQ(std::memcmp(forced.samples[i].value.data(), pruned.samples[i].value.data(), sizeof(float) * 4), 0)
+              << "sample " << i;
         EXPECT_EQ(emulateComposite(tex, v, 1, frame, profile, 2, false, true).colours,
                   emulateComposite(tex, v, 1, frame, profile, 2, false, false).colours);
         ++compared;

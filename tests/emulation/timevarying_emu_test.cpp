@@ -17,7 +17,8 @@ TEST(Mulnorm8, IsLlvmpipesRoundingNotRoundToNearest) {
   EXPECT_EQ(mulnorm8(152, 229), 136);
   int differ = 0;
   for (int a = 0; a < 256; ++a)
-    for (int b = 0; b < 256; ++b) differ += mulnorm8(std::uint8_t(a), std::uint8_t(b)) != static_cast<int>(std::lround(a * b / 255.0));
+    for (int b = 0; b < 256; ++b)
+      differ += mulnorm8(std::uint8_t(a), std::uint8_t(b)) != static_cast<int>(std::lround(a * b / 255.0));
   EXPECT_EQ(differ, 24);  // 12 products, each as (a, b) and (b, a): measured on llvmpipe (research note 2)
   EXPECT_EQ(mulnorm8(255, 255), 255);
   EXPECT_EQ(mulnorm8(0, 255), 0);
@@ -77,7 +78,8 @@ TEST(TimeVaryingDecoderEmu, LiteralModByZeroFoldsOrGivesNaN) {
   const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(s, ref::transferFunction("gray"), o);
   PrecisionProfile unfolded = *findProfile("llvmpipe");
   unfolded.foldsMultiplyByConstantZero = false;
-  const TimeVaryingDecoderEmu folded(tex, ref::DecoderVariant::Literal, *findProfile("llvmpipe")), nan(tex, ref::DecoderVariant::Literal, unfolded);
+  const TimeVaryingDecoderEmu folded(tex, ref::DecoderVariant::Literal, *findProfile("llvmpipe")),
+      nan(tex, ref::DecoderVariant::Literal, unfolded);
   int refinedSamples = 0;
   for (int i = 0; i < 128 && refinedSamples < 50; ++i) {
     const glm::vec3 p((i + 0.5f) / 128, 0.5f, 0.4f);

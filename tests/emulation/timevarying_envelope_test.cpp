@@ -28,7 +28,7 @@ Int128 fixed(double v) {
 // dEQP's ULP of the exact quotient x / y (x, y > 0), derived independently of ulpF32: the binade
 // e with 2^e <= x / y < 2^(e+1) is found by exact comparisons x >= 2^e y.
 double exactQuotientUlp(double x, double y) {
-  int e = std::ilogb(x) - std::ilogb(y) - 2;  // below the binade: x / y >= 2^e
+  int e = std::ilogb(x) - std::ilogb(y) - 2;                       // below the binade: x / y >= 2^e
   while (fixed(x) >= fixed(std::ldexp(y, e + 1)) && e < 127) ++e;  // x / y >= 2^(e+1)
   const bool powerOfTwo = fixed(x) == fixed(std::ldexp(y, e));
   return std::ldexp(1.0, (powerOfTwo ? e - 1 : e) - 23);
@@ -47,7 +47,8 @@ std::vector<float> allowedQuotients(float x, float y) {
   std::vector<float> out;
   const float start = static_cast<float>(static_cast<double>(x) / y);
   for (float f = start; allowedQuotient(f, x, y, u); f = std::nextafter(f, -INFINITY)) out.insert(out.begin(), f);
-  for (float f = std::nextafter(start, INFINITY); allowedQuotient(f, x, y, u); f = std::nextafter(f, INFINITY)) out.push_back(f);
+  for (float f = std::nextafter(start, INFINITY); allowedQuotient(f, x, y, u); f = std::nextafter(f, INFINITY))
+    out.push_back(f);
   return out;
 }
 
@@ -169,7 +170,9 @@ const Config kConfigs[] = {{ref::DecoderVariant::Paper, ref::IndexEncoding::Norm
                            {ref::DecoderVariant::TexelCentre, ref::IndexEncoding::BlockRgba8},
                            {ref::DecoderVariant::TexelFetch, ref::IndexEncoding::BlockRgba8}};
 
-std::size_t countTier(const std::vector<std::uint8_t>& tiers, int tier) { return static_cast<std::size_t>(std::count(tiers.begin(), tiers.end(), tier)); }
+std::size_t countTier(const std::vector<std::uint8_t>& tiers, int tier) {
+  return static_cast<std::size_t>(std::count(tiers.begin(), tiers.end(), tier));
+}
 
 TEST(TimeVaryingEnvelope, ContainsEveryProfilesEmulationOnTheBuiltInScenes) {
   // The soundness check: the drivers' models lie inside the pass envelope, decode and composite.
@@ -203,7 +206,8 @@ TEST(TimeVaryingEnvelope, ContainsTheLiteralAndPaperDecodersOnThePapersLayout) {
     const TimeVaryingEnvelope envelope(tex, v);
     for (const char* profile : {"llvmpipe", "softpipe"}) {
       const EmulatedDecode d = emulateDecodePlanes(tex, v, 1, f, *findProfile(profile));
-      EXPECT_EQ(countTier(envelopeTiers(envelope, 1, f, false, d.colours), 0), d.colours.colours.size()) << ref::name(v) << " " << profile;
+      EXPECT_EQ(countTier(envelopeTiers(envelope, 1, f, false, d.colours), 0), d.colours.colours.size())
+          << ref::name(v) << " " << profile;
     }
   }
 }
@@ -211,7 +215,8 @@ TEST(TimeVaryingEnvelope, ContainsTheLiteralAndPaperDecodersOnThePapersLayout) {
 TEST(TimeVaryingEnvelope, AnOffByOneTexelDecodeFallsOutside) {
   // Negative control: the texel_fetch decoder reading the refinement texel one to the +x side.
   const ref::TimeSeries series = ref::driftingBlobs(16, 3);
-  const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, ref::transferFunction("gray"), {2, ref::IndexEncoding::BlockRgba8});
+  const ref::TimeVaryingTextures tex =
+      ref::encodeTimeVarying(series, ref::transferFunction("gray"), {2, ref::IndexEncoding::BlockRgba8});
   const TimeVaryingEnvelope envelope(tex, ref::DecoderVariant::TexelFetch);
   const ref::PlaneFrame f = builtInFrames(16, tex.layout.blockSide, tex.layout.cells)[0];
   EmulatedDecode d = emulateDecodePlanes(tex, ref::DecoderVariant::TexelFetch, 1, f, *findProfile("llvmpipe"));
@@ -220,7 +225,9 @@ TEST(TimeVaryingEnvelope, AnOffByOneTexelDecodeFallsOutside) {
     if (!d.samples[i].refined) continue;
     std::array<int, 3> t = d.samples[i].refinementTexel;
     t[0] = std::min(t[0] + 1, tex.refinement.dims[0] - 1);
-    const std::uint8_t* wrong = &tex.refinement.texels[4 * (t[0] + static_cast<std::size_t>(tex.refinement.dims[0]) * (t[1] + static_cast<std::size_t>(tex.refinement.dims[1]) * t[2]))];
+    const std::uint8_t* wrong =
+        &tex.refinement.texels[4 * (t[0] + static_cast<std::size_t>(tex.refinement.dims[0]) *
+                                               (t[1] + static_cast<std::size_t>(tex.refinement.dims[1]) * t[2]))];
     ref::Rgba8& c = d.colours.colours[i];
     int diff = 0;
     for (int ch = 0; ch < 4; ++ch) diff = std::max(diff, std::abs(int(c[ch]) - int(wrong[ch])));
@@ -237,7 +244,8 @@ TEST(TimeVaryingEnvelope, QualityWarningTierAcceptsAFetchASubtexelStepAcrossAFac
   // subtexel bits, 1/128 texel) reads only voxel i, the quality-warning one (4 bits, 1/16) voxel
   // i - 1 too. A driver returning voxel i - 1 there earns a warning, not a pass or a failure.
   const ref::TimeSeries series = ref::driftingBlobs(16, 1);
-  const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, ref::transferFunction("gray"), {2, ref::IndexEncoding::NormalizedFloat});
+  const ref::TimeVaryingTextures tex =
+      ref::encodeTimeVarying(series, ref::transferFunction("gray"), {2, ref::IndexEncoding::NormalizedFloat});
   const TimeVaryingEnvelope envelope(tex, ref::DecoderVariant::Paper);
   const double h = 1.0 / 16;
   const ref::PlaneFrame f = ref::explicitFrame({h / 32 - h / 2, 0, 0}, {h, 0, 0}, {0, h, 0}, {0, 0, h}, 16, 16, 16);

@@ -58,7 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (!insideDirectory(f.path)) violated("file path '" + f.path + "' leaves the fixture directory");
   for (const conf::IsoScene& s : m.scenes) {
     const std::filesystem::path name(s.name);
-    if (!insideDirectory(name) || std::distance(name.begin(), name.end()) != 1) violated("scene name '" + s.name + "' is not one path component");
+    if (!insideDirectory(name) || std::distance(name.begin(), name.end()) != 1)
+      violated("scene name '" + s.name + "' is not one path component");
     for (int f = 0; f < std::min(s.path.frames, 4); ++f) {
       try {
         (void)ref::cameraBasis(ref::orbitCamera(s.path, f, s.camera));

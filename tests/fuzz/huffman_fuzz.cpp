@@ -96,7 +96,8 @@ void lengthsMode(std::string_view rest) {
   if (rest.empty()) return;
   const int limit = 1 + static_cast<unsigned char>(rest[0]) % kMaxCodeLength;
   std::vector<std::uint64_t> counts;
-  for (std::size_t i = 1; i + 1 < rest.size() && counts.size() < 64; i += 2) counts.push_back(loadLe(rest.data() + i, 2));
+  for (std::size_t i = 1; i + 1 < rest.size() && counts.size() < 64; i += 2)
+    counts.push_back(loadLe(rest.data() + i, 2));
   std::vector<std::uint8_t> lengths;
   try {
     lengths = huffmanCodeLengths(counts, limit);

@@ -28,7 +28,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   LebReader reader(s, 1 << 16);
   const int n = s->grid.side();
-  for (const GridPoint& p : {GridPoint{0, 0, 0}, GridPoint{n / 2, n / 2, n / 2}, GridPoint{s->dims[0] - 1, s->dims[1] - 1, s->dims[2] - 1}}) {
+  for (const GridPoint& p : {GridPoint{0, 0, 0}, GridPoint{n / 2, n / 2, n / 2},
+                             GridPoint{s->dims[0] - 1, s->dims[1] - 1, s->dims[2] - 1}}) {
     try {
       (void)reader.sample(p);
       if (s->channel(LebChannelKind::Gradients)) (void)reader.gradient(p);

@@ -25,19 +25,19 @@
 #include <string>
 #include <vector>
 
-#include "conformance/modules/catalog.h"
+#include "conformance/framework/report/results_json.h"
+#include "conformance/framework/report/results_reader.h"
 #include "conformance/io/raw_volume.h"
 #include "conformance/io/sha256.h"
-#include "reference/timevarying/container.h"
+#include "conformance/modules/catalog.h"
 #include "conformance/modules/iso/iso_fixtures.h"
 #include "conformance/modules/iso/iso_manifest.h"
 #include "conformance/modules/iso/iso_scene.h"
-#include "conformance/framework/report/results_json.h"
-#include "conformance/framework/report/results_reader.h"
 #include "conformance/modules/sparsegrid/sparsegrid_scene.h"
 #include "conformance/modules/timevarying/timevarying_scene.h"
 #include "reference/common/byte_stream.h"
 #include "reference/leb/lead1_coder.h"
+#include "reference/timevarying/container.h"
 #include "reference/timevarying/plume.h"
 
 namespace {
@@ -66,19 +66,26 @@ void timevarying() {
   std::vector<ref::Volume<std::uint8_t>> odd;  // 5x6x7, padded to 8^3
   for (int t = 0; t < 2; ++t) {
     ref::Volume<std::uint8_t> v({5, 6, 7});
-    for (std::size_t i = 0; i < v.data().size(); ++i) v.data()[i] = static_cast<std::uint8_t>((i * 7 + 40 * t) % 97 < 40 ? 0 : 200);
+    for (std::size_t i = 0; i < v.data().size(); ++i)
+      v.data()[i] = static_cast<std::uint8_t>((i * 7 + 40 * t) % 97 < 40 ? 0 : 200);
     odd.push_back(std::move(v));
   }
   std::vector<Seed> seeds{
-      {"plume8_rgba8_l1.vxtv", ref::dischargePlume({8, 2, 4000.0}), "gray", 1, ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Refine},
-      {"plume8_rgba16_l2.vxtv", ref::dischargePlume({8, 2, 4000.0}), "gray", 2, ref::IndexEncoding::NormalizedRgba16, ref::AlphaOnePolicy::Refine},
-      {"blobs8_float_l1.vxtv", ref::driftingBlobs(8, 3), "gray", 1, ref::IndexEncoding::NormalizedFloat, ref::AlphaOnePolicy::Refine},
-      {"blobs8_block_l2.vxtv", ref::driftingBlobs(8, 3), "gray", 2, ref::IndexEncoding::BlockRgba8, ref::AlphaOnePolicy::Paper},
-      {"odd5x6x7_rgba8_l1.vxtv", ref::padToCube(odd), "gray", 1, ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Refine},
+      {"plume8_rgba8_l1.vxtv", ref::dischargePlume({8, 2, 4000.0}), "gray", 1, ref::IndexEncoding::NormalizedRgba8,
+       ref::AlphaOnePolicy::Refine},
+      {"plume8_rgba16_l2.vxtv", ref::dischargePlume({8, 2, 4000.0}), "gray", 2, ref::IndexEncoding::NormalizedRgba16,
+       ref::AlphaOnePolicy::Refine},
+      {"blobs8_float_l1.vxtv", ref::driftingBlobs(8, 3), "gray", 1, ref::IndexEncoding::NormalizedFloat,
+       ref::AlphaOnePolicy::Refine},
+      {"blobs8_block_l2.vxtv", ref::driftingBlobs(8, 3), "gray", 2, ref::IndexEncoding::BlockRgba8,
+       ref::AlphaOnePolicy::Paper},
+      {"odd5x6x7_rgba8_l1.vxtv", ref::padToCube(odd), "gray", 1, ref::IndexEncoding::NormalizedRgba8,
+       ref::AlphaOnePolicy::Refine},
   };
   for (const std::string& tf : ref::transferFunctionNames())
     if (tf != "gray") {
-      seeds.push_back({"blobs8_" + tf + "_l1.vxtv", ref::driftingBlobs(8, 2), tf, 1, ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Paper});
+      seeds.push_back({"blobs8_" + tf + "_l1.vxtv", ref::driftingBlobs(8, 2), tf, 1,
+                       ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Paper});
       break;
     }
   for (const Seed& s : seeds) {
@@ -208,7 +215,9 @@ void rawVolume() {
 // --- fixture manifests (the layout generateIsoFixtures writes) -----------------------------
 void manifest() {
   auto seed = [](const std::string& name, const std::vector<conf::IsoScene>& scenes) {
-    nlohmann::json m{{"generator", conf::kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
+    nlohmann::json m{{"generator", conf::kFixtureGenerator},
+                     {"scenes", nlohmann::json::array()},
+                     {"files", nlohmann::json::array()}};
     for (const conf::IsoScene& s : scenes) {
       m["scenes"].push_back(conf::toJson(s));
       for (int f = 0; f < s.path.frames; ++f)
@@ -309,8 +318,9 @@ void results() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::map<std::string, std::function<void()>> kinds{{"timevarying", timevarying}, {"huffman", huffman}, {"scene", scene},
-                                                          {"raw_volume", rawVolume},   {"manifest", manifest}, {"results", results}};
+  const std::map<std::string, std::function<void()>> kinds{
+      {"timevarying", timevarying}, {"huffman", huffman},   {"scene", scene},
+      {"raw_volume", rawVolume},    {"manifest", manifest}, {"results", results}};
   if (argc != 3 || !kinds.count(argv[1])) {
     std::cerr << "usage: make_fuzz_seeds timevarying|huffman|scene|raw_volume|manifest|results DIR\n";
     return 2;
@@ -323,7 +333,8 @@ int main(int argc, char** argv) {
     std::cerr << "make_fuzz_seeds " << argv[1] << ": " << e.what() << "\n";
     return 1;
   }
-  std::cout << "make_fuzz_seeds " << argv[1] << ": " << std::distance(fs::directory_iterator(outDir), fs::directory_iterator()) << " seeds in "
+  std::cout << "make_fuzz_seeds " << argv[1] << ": "
+            << std::distance(fs::directory_iterator(outDir), fs::directory_iterator()) << " seeds in "
             << outDir.string() << "\n";
   return 0;
 }

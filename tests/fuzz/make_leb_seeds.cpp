@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   Volume<std::uint16_t> smooth({9, 7, 5}), noise({4, 4, 4}), wide({5, 5, 3});
   for (int z = 0; z < 5; ++z)
     for (int y = 0; y < 7; ++y)
-      for (int x = 0; x < 9; ++x) smooth.at(x, y, z) = static_cast<std::uint16_t>(128 + 100 * std::sin(0.5 * x + 0.3 * y - 0.2 * z));
+      for (int x = 0; x < 9; ++x)
+        smooth.at(x, y, z) = static_cast<std::uint16_t>(128 + 100 * std::sin(0.5 * x + 0.3 * y - 0.2 * z));
   for (auto& s : noise.data()) s = static_cast<std::uint16_t>(rng() & 255);
   for (auto& s : wide.data()) s = static_cast<std::uint16_t>(rng() & 65535);
   write("smooth_gradients.vxleb", smooth, 8, 4, true);

@@ -36,7 +36,8 @@
 namespace {
 
 const std::filesystem::path& scratchFile() {
-  static const std::filesystem::path p = std::filesystem::temp_directory_path() / ("voxref-raw-volume-fuzz-" + std::to_string(::getpid()) + ".raw");
+  static const std::filesystem::path p =
+      std::filesystem::temp_directory_path() / ("voxref-raw-volume-fuzz-" + std::to_string(::getpid()) + ".raw");
   static const bool cleanup = [] { return std::atexit([] { std::filesystem::remove(scratchFile()); }) == 0; }();
   (void)cleanup;
   return p;
@@ -50,7 +51,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const char* bytes = reinterpret_cast<const char*>(data);
   const bool sixteen = data[0] & 1;
   ref::Dims3 dims{};
-  for (int a = 0; a < 3; ++a) dims[static_cast<std::size_t>(a)] = static_cast<std::int32_t>(static_cast<std::uint32_t>(ref::loadLe(bytes + 1 + 4 * a, 4)));
+  for (int a = 0; a < 3; ++a)
+    dims[static_cast<std::size_t>(a)] =
+        static_cast<std::int32_t>(static_cast<std::uint32_t>(ref::loadLe(bytes + 1 + 4 * a, 4)));
   {
     std::ofstream out(scratchFile(), std::ios::binary | std::ios::trunc);
     out.write(bytes + 13, static_cast<std::streamsize>(size - 13));
@@ -69,7 +72,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     } else {
       const ref::Volume<std::uint8_t> v = io::readRawVolumeU8(scratchFile(), dims);
       if (v.dims() != dims || v.data().size() != ref::sampleCount(dims)) std::abort();
-      if (plain && std::string_view(reinterpret_cast<const char*>(v.data().data()), v.data().size()) != content) std::abort();
+      if (plain && std::string_view(reinterpret_cast<const char*>(v.data().data()), v.data().size()) != content)
+        std::abort();
     }
   } catch (const io::IoError&) {
   }

@@ -54,8 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     shifted[i].oracles = r.cases[i + 1].oracles;
   }
   std::ostringstream out;
-  for (const BaselineDiff& d : {compareWithBaseline(r.cases, r.cases), compareWithBaseline(r.cases, {}), compareWithBaseline({}, r.cases),
-                                compareWithBaseline(r.cases, shifted)}) {
+  for (const BaselineDiff& d : {compareWithBaseline(r.cases, r.cases), compareWithBaseline(r.cases, {}),
+                                compareWithBaseline({}, r.cases), compareWithBaseline(r.cases, shifted)}) {
     (void)baselineJson(d, "results.json").dump();
     printBaselineDiff(out, d, "results.json");
   }

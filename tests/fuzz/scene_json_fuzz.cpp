@@ -54,7 +54,8 @@ void roundTrip(const char* parser, Parse parse, const Scene& scene) {
   } catch (const std::exception& e) {
     violated(parser, "the scene written back is refused: " + std::string(e.what()) + "\n" + written.dump());
   }
-  if (back != written) violated(parser, "the scene written back reads as another scene:\n" + written.dump() + "\n" + back.dump());
+  if (back != written)
+    violated(parser, "the scene written back reads as another scene:\n" + written.dump() + "\n" + back.dump());
 }
 
 void sparseGrid(const json& j) {
@@ -83,8 +84,8 @@ void timeVarying(const json& j) {
   roundTrip("timevarying", conf::parseTimeVaryingScene, s);
   (void)conf::seriesKey(s);
   (void)conf::stepsOf(s);
-  const std::uint64_t samples =
-      s.frame == "orbit" ? static_cast<std::uint64_t>(s.width) * s.height * s.planes : static_cast<std::uint64_t>(s.side) * s.side * s.side;
+  const std::uint64_t samples = s.frame == "orbit" ? static_cast<std::uint64_t>(s.width) * s.height * s.planes
+                                                   : static_cast<std::uint64_t>(s.side) * s.side * s.side;
   if (samples > (1u << 16) || s.encoding.level >= std::countr_zero(static_cast<unsigned>(s.side))) return;
   ref::TimeVaryingLayout layout;  // what makeFrame reads of the encoder's layout
   layout.side = s.side;

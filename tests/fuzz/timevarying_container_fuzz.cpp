@@ -35,7 +35,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   const std::string again = ref::serializeTimeVarying(f);
   if (again.size() != size || std::string_view(again).substr(0, size - 4) != bytes.substr(0, size - 4)) {
-    std::fprintf(stderr, "serializeTimeVarying(parseTimeVarying(b)) != b (%zu bytes, %zu written back)\n", size, again.size());
+    std::fprintf(stderr, "serializeTimeVarying(parseTimeVarying(b)) != b (%zu bytes, %zu written back)\n", size,
+                 again.size());
     std::abort();
   }
   const ref::TimeVaryingLayout& L = f.textures.layout;

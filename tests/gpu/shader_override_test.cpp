@@ -43,20 +43,23 @@ TEST(ShaderStages, DecoderStagesAreNamedAfterTheirVariants) {
 }
 
 TEST_F(ShaderOverrides, CompileErrorsAreReportedAtTheUsersLine) {
-  const ShaderOverride user{"combination", "out vec4 c;\n\nvoid main() {\n  vec3 p = samplePoint();\n  c = vec4(p * nope, 1.0);\n}\n",
+  const ShaderOverride user{"combination",
+                            "out vec4 c;\n\nvoid main() {\n  vec3 p = samplePoint();\n  c = vec4(p * nope, 1.0);\n}\n",
                             "mine.frag"};
   try {
     (void)buildStageProgram(*context_, combinationStage(), &user);
     FAIL() << "compiled";
   } catch (const ShaderError& e) {
     EXPECT_NE(std::string(e.what()).find("mine.frag (fragment) failed to compile"), std::string::npos) << e.what();
-    EXPECT_NE(e.infoLog().find("0:5("), std::string::npos) << e.infoLog();  // line 5 of the file, after prelude and library
+    EXPECT_NE(e.infoLog().find("0:5("), std::string::npos)
+        << e.infoLog();  // line 5 of the file, after prelude and library
   }
   EXPECT_EQ(user.programsBuilt, 1);
 }
 
 TEST_F(ShaderOverrides, AnOverrideReachesOnlyItsStageAndMayLeaveUniformsOut) {
-  const ShaderOverride user{"timevarying_paper", "out vec4 c;\nvoid main() { c = vec4(samplePoint(), 1.0); }\n", "mine.frag"};
+  const ShaderOverride user{"timevarying_paper", "out vec4 c;\nvoid main() { c = vec4(samplePoint(), 1.0); }\n",
+                            "mine.frag"};
   const Program builtIn = buildStageProgram(*context_, combinationStage(), &user);
   EXPECT_EQ(user.programsBuilt, 0);
   EXPECT_THROW(builtIn.uniform("noSuchUniform"), GlError);

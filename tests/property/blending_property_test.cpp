@@ -78,7 +78,10 @@ std::uint16_t halfTowardZeroModel(float x) {
   std::uint16_t lo = 0, hi = 0x7bff;
   while (lo < hi) {
     const auto mid = static_cast<std::uint16_t>((lo + hi + 1) / 2);
-    if (halfValue(mid) <= a) lo = mid; else hi = static_cast<std::uint16_t>(mid - 1);
+    if (halfValue(mid) <= a)
+      lo = mid;
+    else
+      hi = static_cast<std::uint16_t>(mid - 1);
   }
   return static_cast<std::uint16_t>(lo | (std::signbit(x) ? 0x8000u : 0u));
 }
@@ -89,12 +92,15 @@ float randomSource(Rng& rng, int bits) {
   const int kind = static_cast<int>(uniformInt(rng, 0, 9));
   if (kind <= 3) {
     const double maxCode = static_cast<double>((std::int64_t{1} << bits) - 1);
-    float v = static_cast<float>((static_cast<double>(uniformInt(rng, 0, static_cast<std::int64_t>(maxCode))) + 0.5) / maxCode);
+    float v = static_cast<float>((static_cast<double>(uniformInt(rng, 0, static_cast<std::int64_t>(maxCode))) + 0.5) /
+                                 maxCode);
     for (auto steps = uniformInt(rng, -2, 2); steps != 0; steps += steps > 0 ? -1 : 1)
       v = std::nextafter(v, steps > 0 ? INFINITY : -INFINITY);
     return v;
   }
-  if (kind == 4) return static_cast<float>(std::ldexp(1.0 + uniformUnit(rng), static_cast<int>(uniformInt(rng, -30, 20)))) * (coin(rng, 30) ? -1.0f : 1.0f);
+  if (kind == 4)
+    return static_cast<float>(std::ldexp(1.0 + uniformUnit(rng), static_cast<int>(uniformInt(rng, -30, 20)))) *
+           (coin(rng, 30) ? -1.0f : 1.0f);
   if (kind == 5) return coin(rng, 50) ? 0.0f : 1.0f;
   return static_cast<float>(uniformUnit(rng) * 1.5 - 0.25);
 }
@@ -128,8 +134,10 @@ TEST(BlendingProperty, UnormHalfUpAndHalfTowardZeroMatchTheirModels) {
       const float x = randomSource(rng, 16);
       ASSERT_EQ(floatToUnormHalfUp(x, 16), unormHalfUpModel(x)) << std::hexfloat << x;
       // Any finite float, including denormal binary16 results and overflow.
-      const float y = coin(rng, 50) ? x * 70000.0f
-                                    : std::bit_cast<float>(static_cast<std::uint32_t>(uniformInt(rng, 0, 0xff7fffff)) & 0xff7fffffu);
+      const float y =
+          coin(rng, 50)
+              ? x * 70000.0f
+              : std::bit_cast<float>(static_cast<std::uint32_t>(uniformInt(rng, 0, 0xff7fffff)) & 0xff7fffffu);
       ASSERT_EQ(floatToHalfTowardZero(y), halfTowardZeroModel(y)) << std::hexfloat << y;
     }
   });
@@ -137,16 +145,19 @@ TEST(BlendingProperty, UnormHalfUpAndHalfTowardZeroMatchTheirModels) {
 
 // N draws of ONE / ONE blending onto a cleared pixel, each FUNC_ADD or FUNC_REVERSE_SUBTRACT.
 TEST(BlendingProperty, OneOneAccumulationMatchesTheModelOfEveryFormatAndProfile) {
-  const ref::FramebufferFormat formats[] = {ref::FramebufferFormat::RGBA8, ref::FramebufferFormat::RGBA12, ref::FramebufferFormat::RGBA16,
-                                            ref::FramebufferFormat::RGBA16F, ref::FramebufferFormat::RGBA32F};
+  const ref::FramebufferFormat formats[] = {ref::FramebufferFormat::RGBA8, ref::FramebufferFormat::RGBA12,
+                                            ref::FramebufferFormat::RGBA16, ref::FramebufferFormat::RGBA16F,
+                                            ref::FramebufferFormat::RGBA32F};
   property::forEachSeed(kIterations, kRegressionSeeds, [&](Rng& rng) {
     const auto profiles = knownProfiles();
-    const PrecisionProfile& profile = profiles[static_cast<std::size_t>(uniformInt(rng, 0, static_cast<std::int64_t>(profiles.size()) - 1))];
+    const PrecisionProfile& profile =
+        profiles[static_cast<std::size_t>(uniformInt(rng, 0, static_cast<std::int64_t>(profiles.size()) - 1))];
     const ref::FramebufferFormat format = formats[uniformInt(rng, 0, 4)];
     const bool flushEachPass = coin(rng, 30);
     const BlendEmu emu(format, profile, flushEachPass, 64, 64);
     const int bits = ref::unormBits(format);
-    const bool perPass = format == ref::FramebufferFormat::RGBA12 || profile.framebuffer == FramebufferModel::QuantizePerPass;
+    const bool perPass =
+        format == ref::FramebufferFormat::RGBA12 || profile.framebuffer == FramebufferModel::QuantizePerPass;
     const int passes = static_cast<int>(uniformInt(rng, 1, 40));
     const int addPercent = static_cast<int>(uniformInt(rng, 50, 100));
 
@@ -176,22 +187,30 @@ TEST(BlendingProperty, OneOneAccumulationMatchesTheModelOfEveryFormatAndProfile)
         float r = fl(add ? static_cast<L>(s) + tile : static_cast<L>(tile) - s);
         if (bits) r = clampUnit(r);
         if (flushEachPass && format != ref::FramebufferFormat::RGBA32F) {
-          if (bits == 8) r = fl(static_cast<L>(unormHalfEvenModel(r, 8)) * fl(1.0L / 255));
-          else if (bits == 16) r = fl(static_cast<L>(unormHalfUpModel(r)) * fl(1.0L / 65535));
-          else r = fl(halfValue(halfTowardZeroModel(r)));
+          if (bits == 8)
+            r = fl(static_cast<L>(unormHalfEvenModel(r, 8)) * fl(1.0L / 255));
+          else if (bits == 16)
+            r = fl(static_cast<L>(unormHalfUpModel(r)) * fl(1.0L / 65535));
+          else
+            r = fl(halfValue(halfTowardZeroModel(r)));
         }
         tile = r;
       }
     }
     std::int64_t want = code;
     if (!perPass) {
-      if (bits == 8) want = unormHalfEvenModel(tile, 8);
-      else if (bits == 16) want = profile.unorm16Store == UnormRounding::HalfUp ? unormHalfUpModel(tile) : unormHalfEvenModel(tile, 16);
-      else if (format == ref::FramebufferFormat::RGBA16F) want = halfTowardZeroModel(tile);
-      else want = std::bit_cast<std::uint32_t>(tile);
+      if (bits == 8)
+        want = unormHalfEvenModel(tile, 8);
+      else if (bits == 16)
+        want = profile.unorm16Store == UnormRounding::HalfUp ? unormHalfUpModel(tile) : unormHalfEvenModel(tile, 16);
+      else if (format == ref::FramebufferFormat::RGBA16F)
+        want = halfTowardZeroModel(tile);
+      else
+        want = std::bit_cast<std::uint32_t>(tile);
     }
     ASSERT_EQ(emu.resolve(px), static_cast<std::uint32_t>(want))
-        << profile.name << " " << ref::name(format) << (flushEachPass ? " flush each pass" : "") << " after " << passes << " passes";
+        << profile.name << " " << ref::name(format) << (flushEachPass ? " flush each pass" : "") << " after " << passes
+        << " passes";
   });
 }
 

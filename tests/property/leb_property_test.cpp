@@ -44,7 +44,8 @@ TEST(LebProperty, PredictionDeltaReconstructsEveryValue) {
       const int bits = static_cast<int>(uniformInt(rng, 1, 16));
       const bool isSigned = coin(rng, 30);
       const std::int64_t lo = isSigned ? -(std::int64_t{1} << (bits - 1)) : 0, hi = lo + (std::int64_t{1} << bits) - 1;
-      const auto a = static_cast<std::int32_t>(uniformInt(rng, lo, hi)), b = static_cast<std::int32_t>(uniformInt(rng, lo, hi)),
+      const auto a = static_cast<std::int32_t>(uniformInt(rng, lo, hi)),
+                 b = static_cast<std::int32_t>(uniformInt(rng, lo, hi)),
                  v = static_cast<std::int32_t>(uniformInt(rng, lo, hi));
       const std::int32_t p = predictMidpoint(a, b);
       ASSERT_EQ(p, floorDiv2(std::int64_t{a} + b)) << a << " " << b;
@@ -52,7 +53,8 @@ TEST(LebProperty, PredictionDeltaReconstructsEveryValue) {
       ASSERT_GE(d, -(std::int64_t{1} << (bits - 1))) << "bits " << bits;
       ASSERT_LT(d, std::int64_t{1} << (bits - 1)) << "bits " << bits;
       ASSERT_EQ((std::int64_t{v} - p - d) % (std::int64_t{1} << bits), 0) << "delta is the difference modulo 2^bits";
-      ASSERT_EQ(reconstructSample(p, d, bits, isSigned), v) << "bits " << bits << " a " << a << " b " << b << " v " << v;
+      ASSERT_EQ(reconstructSample(p, d, bits, isSigned), v)
+          << "bits " << bits << " a " << a << " b " << b << " v " << v;
     }
   });
 }
@@ -97,15 +99,24 @@ std::vector<std::uint64_t> randomHistogram(Rng& rng, int symbols) {
   for (int s = 0; s < symbols; ++s) {
     if (coin(rng, 20)) continue;  // unused symbol
     switch (shape) {
-      case 0: counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 1000)); break;
-      case 1: counts[s] = std::uint64_t{1} << uniformInt(rng, 0, 40); break;  // very skewed: long codes
-      case 2: counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 3)); break;  // many ties
-      default: counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 1) + (s < 40 ? (std::uint64_t{1} << s) : 0)); break;  // Fibonacci-like
+      case 0:
+        counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 1000));
+        break;
+      case 1:
+        counts[s] = std::uint64_t{1} << uniformInt(rng, 0, 40);
+        break;  // very skewed: long codes
+      case 2:
+        counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 3));
+        break;  // many ties
+      default:
+        counts[s] = static_cast<std::uint64_t>(uniformInt(rng, 1, 1) + (s < 40 ? (std::uint64_t{1} << s) : 0));
+        break;  // Fibonacci-like
     }
   }
   if (coin(rng, 5)) {  // exactly one used symbol
     std::fill(counts.begin(), counts.end(), 0);
-    counts[static_cast<std::size_t>(uniformInt(rng, 0, symbols - 1))] = static_cast<std::uint64_t>(uniformInt(rng, 1, 99));
+    counts[static_cast<std::size_t>(uniformInt(rng, 0, symbols - 1))] =
+        static_cast<std::uint64_t>(uniformInt(rng, 1, 99));
   }
   return counts;
 }
@@ -162,8 +173,11 @@ TEST(LebProperty, HuffmanLengthsAreCompleteOptimalAndDecodable) {
 std::int32_t randomDelta(Rng& rng, int bits, int spread) {
   const int lead = static_cast<int>(std::min<std::int64_t>(bits, uniformInt(rng, 0, spread)));
   if (lead == 0) return 0;
-  if (lead == bits) return coin(rng, 50) ? -(1 << (bits - 1)) : static_cast<std::int32_t>(uniformInt(rng, -(1 << (bits - 1)), (1 << (bits - 1)) - 1));
-  const auto mag = static_cast<std::int32_t>(uniformInt(rng, std::int64_t{1} << (lead - 1), (std::int64_t{1} << lead) - 1));
+  if (lead == bits)
+    return coin(rng, 50) ? -(1 << (bits - 1))
+                         : static_cast<std::int32_t>(uniformInt(rng, -(1 << (bits - 1)), (1 << (bits - 1)) - 1));
+  const auto mag =
+      static_cast<std::int32_t>(uniformInt(rng, std::int64_t{1} << (lead - 1), (std::int64_t{1} << lead) - 1));
   return coin(rng, 50) ? -mag : mag;
 }
 
@@ -203,9 +217,12 @@ TEST(LebProperty, RandomVolumesRoundTripLosslessly) {
     const int mode = static_cast<int>(uniformInt(rng, 0, 2));
     std::int64_t prev = uniformInt(rng, 0, maxValue);
     for (std::uint16_t& x : v.data()) {
-      if (mode == 0) prev = uniformInt(rng, 0, maxValue);                                     // noise
-      else if (mode == 1) prev = std::clamp<std::int64_t>(prev + uniformInt(rng, -4, 4), 0, maxValue);  // smooth
-      else prev = coin(rng, 90) ? prev : (coin(rng, 50) ? 0 : maxValue);                      // flat with extremes
+      if (mode == 0)
+        prev = uniformInt(rng, 0, maxValue);  // noise
+      else if (mode == 1)
+        prev = std::clamp<std::int64_t>(prev + uniformInt(rng, -4, 4), 0, maxValue);  // smooth
+      else
+        prev = coin(rng, 90) ? prev : (coin(rng, 50) ? 0 : maxValue);  // flat with extremes
       x = static_cast<std::uint16_t>(prev);
     }
     LebEncodeOptions options;
@@ -215,8 +232,8 @@ TEST(LebProperty, RandomVolumesRoundTripLosslessly) {
     const LebStream stream = parseLebStream(encodeLeb(v, bits, options));
     const LebDecoded d = decodeLeb(stream, 1);
     ASSERT_EQ(d.data.dims(), dims);
-    ASSERT_EQ(d.data.data(), v.data()) << bits << "-bit " << dims[0] << "x" << dims[1] << "x" << dims[2] << " page bits "
-                                       << options.pageBits;
+    ASSERT_EQ(d.data.data(), v.data()) << bits << "-bit " << dims[0] << "x" << dims[1] << "x" << dims[2]
+                                       << " page bits " << options.pageBits;
     if (options.gradients) {
       ASSERT_EQ(d.gradients, quantizedGradients(v));
     } else {

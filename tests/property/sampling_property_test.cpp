@@ -38,7 +38,7 @@ using L = long double;
 
 // Seeds that once failed (none yet); each stays here as a fixed case.
 constexpr std::initializer_list<std::uint64_t> kRegressionSeeds = {};
-constexpr int kIterations = 1500;       // textures per property
+constexpr int kIterations = 1500;  // textures per property
 constexpr int kLookupsPerTexture = 200;
 
 float fl(L x) { return static_cast<float>(x); }
@@ -81,15 +81,18 @@ struct Texture {
 float texelValueModel(const Texture& t, std::uint32_t code) {
   switch (t.format) {
     case ref::TexelFormat::R8:
-    case ref::TexelFormat::RGBA8: return fl(static_cast<L>(code) * fl(1.0L / 255));
-    case ref::TexelFormat::R16: return fl(static_cast<L>(code) * fl(1.0L / 65535));
+    case ref::TexelFormat::RGBA8:
+      return fl(static_cast<L>(code) * fl(1.0L / 255));
+    case ref::TexelFormat::R16:
+      return fl(static_cast<L>(code) * fl(1.0L / 65535));
     case ref::TexelFormat::R16F: {
       const int e = static_cast<int>((code >> 10) & 31);
       const int m = static_cast<int>(code & 1023);
       const L mag = e == 0 ? std::ldexp(static_cast<L>(m), -24) : std::ldexp(static_cast<L>(1024 + m), e - 25);
       return fl((code & 0x8000u) ? -mag : mag);
     }
-    case ref::TexelFormat::R32F: return std::bit_cast<float>(code);
+    case ref::TexelFormat::R32F:
+      return std::bit_cast<float>(code);
   }
   return 0.0f;
 }
@@ -158,7 +161,8 @@ float sampleModel(const Texture& t, const PrecisionProfile& p, float s, float tt
   const bool aos = p.aos8BitSampling && ref::unormBits(t.format) == 8 && t.sampler.wrap != ref::Wrap::ClampToBorder;
   if (t.sampler.filter == ref::Filter::Nearest) {  // CLAMP_TO_EDGE only: clamp(floor(fl(u N)))
     auto idx = [](float u, int n) {
-      return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(static_cast<L>(fl(static_cast<L>(u) * n)))), 0, n - 1);
+      return std::clamp<std::int64_t>(static_cast<std::int64_t>(std::floor(static_cast<L>(fl(static_cast<L>(u) * n)))),
+                                      0, n - 1);
     };
     return texelModel(t, idx(s, t.dims[0]), idx(tt, t.dims[1]), idx(r, t.dims[2]));
   }
@@ -197,7 +201,8 @@ Texture randomTexture(Rng& rng, ref::Filter filter, ref::Wrap wrap) {
   const ref::TexelFormat formats[] = {ref::TexelFormat::R8, ref::TexelFormat::RGBA8, ref::TexelFormat::R16,
                                       ref::TexelFormat::R16F, ref::TexelFormat::R32F};
   t.format = formats[uniformInt(rng, 0, 4)];
-  for (int& d : t.dims) d = wrap == ref::Wrap::Repeat ? 1 << uniformInt(rng, 0, 5) : static_cast<int>(uniformInt(rng, 1, 40));
+  for (int& d : t.dims)
+    d = wrap == ref::Wrap::Repeat ? 1 << uniformInt(rng, 0, 5) : static_cast<int>(uniformInt(rng, 1, 40));
   t.sampler = {filter, wrap, coin(rng, 50) ? uniformUnit(rng) * 1.5 - 0.25 : 0.0};
   t.codes.resize(static_cast<std::size_t>(t.dims[0]) * t.dims[1] * t.dims[2]);
   const bool smooth = coin(rng, 50);  // smooth data makes small b - a, noise makes large ones
@@ -214,11 +219,14 @@ Texture randomTexture(Rng& rng, ref::Filter filter, ref::Wrap wrap) {
                    : static_cast<std::uint32_t>(uniformInt(rng, 0, 65535));
         break;
       case ref::TexelFormat::R16F: {  // finite, normal or zero
-        const std::uint32_t e = static_cast<std::uint32_t>(uniformInt(rng, 1, 30)), m = static_cast<std::uint32_t>(uniformInt(rng, 0, 1023));
+        const std::uint32_t e = static_cast<std::uint32_t>(uniformInt(rng, 1, 30)),
+                            m = static_cast<std::uint32_t>(uniformInt(rng, 0, 1023));
         c = coin(rng, 5) ? 0u : ((coin(rng, 30) ? 0x8000u : 0u) | (e << 10) | m);
         break;
       }
-      case ref::TexelFormat::R32F: c = std::bit_cast<std::uint32_t>(randomFloatTexel(rng)); break;
+      case ref::TexelFormat::R32F:
+        c = std::bit_cast<std::uint32_t>(randomFloatTexel(rng));
+        break;
     }
     prev = c;
   }

@@ -27,7 +27,8 @@ Case control(const char* name, const char* description, std::function<CaseResult
 
 std::vector<Case> runnerControlCases() {
   std::vector<Case> cases;
-  cases.push_back(control("driver_crash", "expect crash: glTexImage3D reads texels from an unmapped client pointer inside the driver",
+  cases.push_back(control("driver_crash",
+                          "expect crash: glTexImage3D reads texels from an unmapped client pointer inside the driver",
                           [](CaseContext& ctx) -> CaseResult {
                             say("handing the driver an unmapped pointer");
                             const gpu::GlApi& gl = ctx.gl()->gl();
@@ -46,22 +47,25 @@ std::vector<Case> runnerControlCases() {
     std::raise(SIGSEGV);
     throw std::logic_error("SIGSEGV did not end the process");
   }));
-  cases.push_back(control("abort", "expect crash: abort() as a failed assertion in a driver would", [](CaseContext&) -> CaseResult {
-    say("calling abort()");
-    std::abort();
-  }));
-  cases.push_back(control("exit", "expect crash: the process exits with status 7 without a result", [](CaseContext&) -> CaseResult {
-    say("calling exit(7)");
-    std::exit(7);
-  }));
+  cases.push_back(
+      control("abort", "expect crash: abort() as a failed assertion in a driver would", [](CaseContext&) -> CaseResult {
+        say("calling abort()");
+        std::abort();
+      }));
+  cases.push_back(
+      control("exit", "expect crash: the process exits with status 7 without a result", [](CaseContext&) -> CaseResult {
+        say("calling exit(7)");
+        std::exit(7);
+      }));
   cases.push_back(control("hang", "expect timeout: the case sleeps forever", [](CaseContext&) -> CaseResult {
     say("sleeping forever");
     for (;;) pause();
   }));
-  cases.push_back(control("exception", "expect crash: the case throws std::runtime_error", [](CaseContext&) -> CaseResult {
-    say("throwing");
-    throw std::runtime_error("a deliberate exception");
-  }));
+  cases.push_back(
+      control("exception", "expect crash: the case throws std::runtime_error", [](CaseContext&) -> CaseResult {
+        say("throwing");
+        throw std::runtime_error("a deliberate exception");
+      }));
   return cases;
 }
 

@@ -57,8 +57,8 @@ void exitAtOnce(int status, void*) {
 }
 
 // The child's side: never returns.
-[[noreturn]] void runChild(std::size_t index, const std::function<std::string(std::size_t)>& task, pid_t parent, int outputWrite,
-                           int resultWrite) {
+[[noreturn]] void runChild(std::size_t index, const std::function<std::string(std::size_t)>& task, pid_t parent,
+                           int outputWrite, int resultWrite) {
   setpgid(0, 0);
   prctl(PR_SET_PDEATHSIG, SIGKILL);
   if (getppid() != parent) _exit(125);  // the parent died before the line above
@@ -203,8 +203,10 @@ std::string describe(const ChildOutcome& o, double timeLimitSeconds) {
 bool runEachInChild(std::size_t count, const PoolOptions& options, const std::function<std::string(std::size_t)>& task,
                     const std::function<void(std::size_t, const ChildOutcome&)>& finished) {
   const int jobs = std::max(1, options.jobs);
-  const auto limit = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeLimitSeconds));
-  const auto tickEvery = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(options.tickSeconds, 0.01)));
+  const auto limit =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.timeLimitSeconds));
+  const auto tickEvery =
+      std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(options.tickSeconds, 0.01)));
   auto nextTick = Clock::now() + tickEvery;
   std::vector<Running> running;
   std::size_t next = 0;
@@ -212,7 +214,8 @@ bool runEachInChild(std::size_t count, const PoolOptions& options, const std::fu
     const bool interrupted = interruptSignal() != 0;
     if (interrupted)
       for (Running& r : running) killGroup(r, Ending::Interrupted);
-    while (!interrupted && next < count && running.size() < static_cast<std::size_t>(jobs)) running.push_back(start(next++, task));
+    while (!interrupted && next < count && running.size() < static_cast<std::size_t>(jobs))
+      running.push_back(start(next++, task));
     if (running.empty()) return !interrupted;
 
     // Children whose pipes are both closed (or that were killed) are reaped and reported.
@@ -239,7 +242,8 @@ bool runEachInChild(std::size_t count, const PoolOptions& options, const std::fu
     if (options.timeLimitSeconds > 0)
       for (const Running& r : running) soonest = std::min(soonest, r.started + limit - now);
     if (options.tickSeconds > 0 && options.tick) soonest = std::min(soonest, nextTick - now);
-    const int waitMs = static_cast<int>(std::clamp<long long>(std::chrono::duration_cast<std::chrono::milliseconds>(soonest).count() + 1, 0, 60000));
+    const int waitMs = static_cast<int>(
+        std::clamp<long long>(std::chrono::duration_cast<std::chrono::milliseconds>(soonest).count() + 1, 0, 60000));
     const int ready = poll(fds.data(), fds.size(), waitMs);
     if (ready < 0 && errno != EINTR) fail("poll on the children's pipes");
     for (std::size_t f = 0; f < owners.size(); ++f) {

@@ -32,7 +32,8 @@ void onSignal(int sig) {
 }  // namespace
 
 InterruptGuard::InterruptGuard() {
-  if (pipe2(gPipe, O_CLOEXEC | O_NONBLOCK) != 0) throw std::system_error(errno, std::generic_category(), "pipe for interrupts");
+  if (pipe2(gPipe, O_CLOEXEC | O_NONBLOCK) != 0)
+    throw std::system_error(errno, std::generic_category(), "pipe for interrupts");
   gSignal = 0;
   struct sigaction sa {};
   sa.sa_handler = onSignal;

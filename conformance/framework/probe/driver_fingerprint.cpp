@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstdio>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <map>
 #include <stdexcept>
@@ -32,8 +32,8 @@ std::string num(double v) {
 
 float valueOf(std::uint32_t bits) { return std::bit_cast<float>(bits); }
 
-const ProbeFrame& frameOf(std::span<const ProbeFrame> frames, std::string_view id, ref::FramebufferFormat format, int width,
-                          int height) {
+const ProbeFrame& frameOf(std::span<const ProbeFrame> frames, std::string_view id, ref::FramebufferFormat format,
+                          int width, int height) {
   for (const ProbeFrame& f : frames)
     if (f.id == id) {
       if (f.format != format || f.width != width || f.height != height ||
@@ -80,12 +80,14 @@ InferredProperty subtexelBits(std::string id, std::size_t steps) {
   const int bits = weightBits(steps);
   const std::string across = " across one texel (" + str(kTexel + 1) + " samples 2^-14 texel apart)";
   if (bits == kFloatWeights)
-    return {id, "float", "the result changes at every one of the " + str(steps) + " samples" + across +
-                             ": weights finer than 2^-14 texel, not fixed point"};
+    return {id, "float",
+            "the result changes at every one of the " + str(steps) + " samples" + across +
+                ": weights finer than 2^-14 texel, not fixed point"};
   if (bits == kOddSteps)
     return {id, "unknown", "the result changes " + str(steps) + " times" + across + ": not a power of two"};
-  return {id, std::to_string(bits), "the result changes " + str(steps) + " times" + across + ", in runs of " +
-                                        str(kTexel / steps) + " samples: 2^" + std::to_string(bits) + " weights"};
+  return {id, std::to_string(bits),
+          "the result changes " + str(steps) + " times" + across + ", in runs of " + str(kTexel / steps) +
+              " samples: 2^" + std::to_string(bits) + " weights"};
 }
 
 // Where the steps fall on the fixed-point grid of n bits. Step j (to weight m = j + 1) at sample k
@@ -114,8 +116,9 @@ InferredProperty coordinateRounding(const std::vector<int>& steps, int bits) {
   std::string value = "unknown";
   for (const auto& [name, n] : fits)
     if (n == steps.size()) value = name;
-  std::string evidence = "of " + str(steps.size()) + " steps, " + str(evenAtHalf) + " to an even weight fall on the half-way sample and " +
-                         str(oddAfterHalf) + " to an odd weight one sample (2^-14 texel) after it; fits:";
+  std::string evidence = "of " + str(steps.size()) + " steps, " + str(evenAtHalf) +
+                         " to an even weight fall on the half-way sample and " + str(oddAfterHalf) +
+                         " to an odd weight one sample (2^-14 texel) after it; fits:";
   for (const auto& [name, n] : fits) evidence += " " + name + " " + str(n);
   return {id, value, evidence};
 }
@@ -127,13 +130,15 @@ int unorm8CodeOf(float v) {
   return emu::unormToFloat(k, 8) == v ? static_cast<int>(k) : -1;
 }
 
-InferredProperty lerp8Rounding(const ProbeFrame& f, const ref::ProbeSweep& sweep, const std::vector<int>& steps, int bits) {
+InferredProperty lerp8Rounding(const ProbeFrame& f, const ref::ProbeSweep& sweep, const std::vector<int>& steps,
+                               int bits) {
   const std::string id = "sampling.unorm8.lerp_rounding";
   std::size_t between = 0;
   for (int k = 0; k <= kTexel; ++k)
     for (int c = 0; c < 4; ++c) between += unorm8CodeOf(valueOf(f.codes[k][c])) < 0;
   if (between)
-    return {id, "float", str(between) + " of " + str(4 * (kTexel + 1)) + " results lie between unorm8 codes: the lerp is not 8-bit"};
+    return {id, "float",
+            str(between) + " of " + str(4 * (kTexel + 1)) + " results lie between unorm8 codes: the lerp is not 8-bit"};
   if (bits < 0) return {id, "unknown", "8-bit results, but no fixed-point weight grid to hold them against"};
   // Weight w of run w (the samples before step w + 1); the run after the last step is texel 1.
   const int one = 1 << bits;
@@ -150,10 +155,13 @@ InferredProperty lerp8Rounding(const ProbeFrame& f, const ref::ProbeSweep& sweep
       floor += got == fl;
     }
   }
-  const std::string value = nearest == pairs && floor < pairs ? "nearest" : floor == pairs && nearest < pairs ? "floor" : "unknown";
-  return {id, value, str(one) + " weights x 4 channels (" + str(differ) + " where the candidates differ): a + ((w(b-a) + " +
-                         str(one / 2) + ") >> " + std::to_string(bits) + ") fits " + str(nearest) + ", a + (w(b-a) >> " +
-                         std::to_string(bits) + ") fits " + str(floor)};
+  const std::string value = nearest == pairs && floor < pairs   ? "nearest"
+                            : floor == pairs && nearest < pairs ? "floor"
+                                                                : "unknown";
+  return {id, value,
+          str(one) + " weights x 4 channels (" + str(differ) + " where the candidates differ): a + ((w(b-a) + " +
+              str(one / 2) + ") >> " + std::to_string(bits) + ") fits " + str(nearest) + ", a + (w(b-a) >> " +
+              std::to_string(bits) + ") fits " + str(floor)};
 }
 
 InferredProperty floatLerp(const ProbeFrame& f, const ref::ProbeSweep& sweep) {
@@ -173,7 +181,8 @@ InferredProperty floatLerp(const ProbeFrame& f, const ref::ProbeSweep& sweep) {
   }
   const std::string value = differ && fused == differ ? "fused" : differ && unfused == differ ? "unfused" : "unknown";
   return {"sampling.float.lerp", value,
-          "of " + str(differ) + " samples where fma(w, b-a, a) and a + fl(w(b-a)) differ (w read from the 0 -> 1 channel), fused fits " +
+          "of " + str(differ) +
+              " samples where fma(w, b-a, a) and a + fl(w(b-a)) differ (w read from the 0 -> 1 channel), fused fits " +
               str(fused) + ", unfused " + str(unfused)};
 }
 
@@ -201,7 +210,8 @@ InferredProperty repeatScaling(const ProbeFrame& f, const ref::ProbeSweep& sweep
   for (std::size_t k = 0; k < n; ++k) {
     const float w = valueOf(f.codes[k][0]);
     if (!(w > 0.0f && w < 1.0f)) return {id, "unknown", "sample " + str(k) + " gives a weight outside (0, 1)"};
-    const auto scaled = static_cast<std::uint64_t>(std::ldexp(static_cast<double>(w), 60));  // exact: w >= 2^-60 has <= 24 bits
+    const auto scaled =
+        static_cast<std::uint64_t>(std::ldexp(static_cast<double>(w), 60));  // exact: w >= 2^-60 has <= 24 bits
     finest = std::min(finest, std::countr_zero(scaled) - 60);
   }
   const float uN = sweep.u(0) * static_cast<float>(sweep.texels);
@@ -209,9 +219,11 @@ InferredProperty repeatScaling(const ProbeFrame& f, const ref::ProbeSweep& sweep
   const std::string weights = "weights of " + str(n) + " samples at u = " + num(sweep.u(0)) + " + k 2^" +
                               std::to_string(std::ilogb(sweep.uStep)) + " on " + std::to_string(sweep.texels) +
                               " texels are multiples of 2^" + std::to_string(finest);
-  const std::string of = "the float spacing 2^" + std::to_string(spacing) + " at u * " + std::to_string(sweep.texels) + " = " + num(uN);
+  const std::string of =
+      "the float spacing 2^" + std::to_string(spacing) + " at u * " + std::to_string(sweep.texels) + " = " + num(uN);
   if (finest == spacing) return {id, "scale_then_floor", weights + ", " + of + ": u is scaled before it is wrapped"};
-  if (finest < spacing) return {id, "fract_then_scale", weights + ", finer than " + of + ": u is wrapped (fract) before it is scaled"};
+  if (finest < spacing)
+    return {id, "fract_then_scale", weights + ", finer than " + of + ": u is wrapped (fract) before it is scaled"};
   return {id, "unknown", weights + ", coarser than " + of + ": weights quantized to fixed point"};
 }
 
@@ -223,7 +235,8 @@ const std::map<std::string, Rounder>& storeCandidates() {
   static const std::map<std::string, Rounder> c{
       {"half_even", [](float x, int b) { return emu::floatToUnormHalfEven(x, b); }},
       {"half_up", [](float x, int b) { return emu::floatToUnormHalfUp(x, b); }},
-      {"floor", [](float x, int b) {
+      {"floor",
+       [](float x, int b) {
          const float p = std::clamp(x, 0.0f, 1.0f) * static_cast<float>((1u << b) - 1u);
          return static_cast<std::uint32_t>(p);
        }},
@@ -253,8 +266,9 @@ InferredProperty storeRounding(std::string id, const ProbeFrame& f, const ref::P
   for (const auto& [name, n] : fits)
     if (n == samples) value = name, ++allFit;
   if (allFit > 1) value = "unknown";
-  std::string evidence = str(ties) + " of " + str(samples) + " values are ties (fl(x * " + std::to_string(static_cast<int>(maxCode)) +
-                         ") = k + 1/2): " + str(tiesEvenDown) + " with k even went down, " + str(tiesOddUp) + " with k odd went up; fits:";
+  std::string evidence = str(ties) + " of " + str(samples) + " values are ties (fl(x * " +
+                         std::to_string(static_cast<int>(maxCode)) + ") = k + 1/2): " + str(tiesEvenDown) +
+                         " with k even went down, " + str(tiesOddUp) + " with k odd went up; fits:";
   for (const auto& [name, n] : fits) evidence += " " + name + " " + str(n);
   return {std::move(id), value, evidence};
 }
@@ -274,9 +288,12 @@ InferredProperty betweenPasses(const ProbeFrame& f, const ref::ProbeWrite& write
       perPass += f.codes[i][c] == stored;
       floatTile += f.codes[i][c] == kept;
     }
-  const std::string value = differ && perPass == differ ? "requantized" : differ && floatTile == differ ? "float_tile_cache" : "unknown";
-  return {id, value, "two ONE/ONE passes of x into RGBA8, " + str(differ) + " values where the models differ: q(x) + q(x) fits " +
-                         str(perPass) + ", q(x + x) fits " + str(floatTile) + " (q: " + unorm8.value + ")"};
+  const std::string value = differ && perPass == differ     ? "requantized"
+                            : differ && floatTile == differ ? "float_tile_cache"
+                                                            : "unknown";
+  return {id, value,
+          "two ONE/ONE passes of x into RGBA8, " + str(differ) + " values where the models differ: q(x) + q(x) fits " +
+              str(perPass) + ", q(x + x) fits " + str(floatTile) + " (q: " + unorm8.value + ")"};
 }
 
 InferredProperty alphaBlend(const ProbeFrame& f, const ref::ProbeWrite& write, const InferredProperty& unorm8) {
@@ -284,7 +301,9 @@ InferredProperty alphaBlend(const ProbeFrame& f, const ref::ProbeWrite& write, c
   const auto rounder = storeCandidates().find(unorm8.value);
   if (rounder == storeCandidates().end()) return {id, "unknown", "the unorm8 store rounding is unknown"};
   const Rounder& q = rounder->second;
-  auto code = [](float v) { return static_cast<unsigned>(std::nearbyint(v * 255.0f)); };  // the inputs are unorm8 floats
+  auto code = [](float v) {
+    return static_cast<unsigned>(std::nearbyint(v * 255.0f));
+  };  // the inputs are unorm8 floats
   std::size_t differ = 0, mul = 0, exact = 0, flt = 0;
   for (std::size_t i = 0; i < f.codes.size(); ++i) {
     const auto& dst = write.passes[0][i];  // (d, 1): stored as d by every candidate
@@ -292,8 +311,9 @@ InferredProperty alphaBlend(const ProbeFrame& f, const ref::ProbeWrite& write, c
     const unsigned a = code(src[3]);
     for (int c = 0; c < 4; ++c) {
       const unsigned s = code(src[c]), d = code(dst[c]);
-      const unsigned m = std::min(255u, unsigned{emu::mulnorm8(static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(a))} +
-                                            emu::mulnorm8(static_cast<std::uint8_t>(d), static_cast<std::uint8_t>(255 - a)));
+      const unsigned m =
+          std::min(255u, unsigned{emu::mulnorm8(static_cast<std::uint8_t>(s), static_cast<std::uint8_t>(a))} +
+                             emu::mulnorm8(static_cast<std::uint8_t>(d), static_cast<std::uint8_t>(255 - a)));
       const unsigned e = std::min(255u, (s * a + 127) / 255 + (d * (255 - a) + 127) / 255);
       const float A = emu::unormToFloat(a, 8);
       const float sum = emu::unormToFloat(s, 8) * A + emu::unormToFloat(d, 8) * (1.0f - A);
@@ -306,9 +326,13 @@ InferredProperty alphaBlend(const ProbeFrame& f, const ref::ProbeWrite& write, c
       flt += got == fl;
     }
   }
-  const std::string value = differ && mul == differ ? "mulnorm" : differ && exact == differ ? "exact" : differ && flt == differ ? "float" : "unknown";
-  return {id, value, str(differ) + " channels where the candidates differ: (t + (t >> 8) + 128) >> 8 fits " + str(mul) +
-                         ", round(x y / 255) fits " + str(exact) + ", float32 blend rounded once fits " + str(flt)};
+  const std::string value = differ && mul == differ     ? "mulnorm"
+                            : differ && exact == differ ? "exact"
+                            : differ && flt == differ   ? "float"
+                                                        : "unknown";
+  return {id, value,
+          str(differ) + " channels where the candidates differ: (t + (t >> 8) + 128) >> 8 fits " + str(mul) +
+              ", round(x y / 255) fits " + str(exact) + ", float32 blend rounded once fits " + str(flt)};
 }
 
 }  // namespace
@@ -324,7 +348,9 @@ DriverFingerprint inferFingerprint(const ProbeDesign& design, std::span<const Pr
   auto sweepFrame = [&](const ref::ProbeSweep& s) -> const ProbeFrame& {
     return frameOf(frames, s.id, FramebufferFormat::RGBA32F, s.width, s.height);
   };
-  auto writeFrame = [&](const ref::ProbeWrite& w) -> const ProbeFrame& { return frameOf(frames, w.id, w.format, w.width, w.height); };
+  auto writeFrame = [&](const ref::ProbeWrite& w) -> const ProbeFrame& {
+    return frameOf(frames, w.id, w.format, w.width, w.height);
+  };
   DriverFingerprint fp;
   auto& out = fp.properties;
 

@@ -28,7 +28,8 @@ struct ProfileComparison {
 };
 
 // One comparison per known profile, in emu::knownProfiles() order.
-std::vector<ProfileComparison> compareWithKnownProfiles(const ref::ProbeDesign& design, const DriverFingerprint& measured,
+std::vector<ProfileComparison> compareWithKnownProfiles(const ref::ProbeDesign& design,
+                                                        const DriverFingerprint& measured,
                                                         std::span<const ref::ProbeFrame> frames);
 
 // "profile: llvmpipe (...)" or "no known profile matches: closest X differs in ...": the verdict
@@ -36,7 +37,8 @@ std::vector<ProfileComparison> compareWithKnownProfiles(const ref::ProbeDesign& 
 std::string verdictLine(const std::vector<ProfileComparison>& comparisons);
 
 // The fingerprint as a table (property, value, evidence), then the verdict.
-void printProbeReport(std::ostream& out, const DriverFingerprint& measured, const std::vector<ProfileComparison>& comparisons);
+void printProbeReport(std::ostream& out, const DriverFingerprint& measured,
+                      const std::vector<ProfileComparison>& comparisons);
 
 // {"properties": [{id, value, evidence}], "profiles": [{name, matches, differences, frames_identical}],
 //  "matched": [names]}

@@ -27,7 +27,8 @@ nlohmann::json changesJson(const std::vector<CaseChange>& changes) {
   nlohmann::json list = nlohmann::json::array();
   for (const CaseChange& c : changes) {
     nlohmann::json moved = nlohmann::json::array();
-    for (const FigureMove& m : c.moved) moved.push_back({{"oracle", m.oracle}, {"figure", m.figure}, {"before", m.before}, {"after", m.after}});
+    for (const FigureMove& m : c.moved)
+      moved.push_back({{"oracle", m.oracle}, {"figure", m.figure}, {"before", m.before}, {"after", m.after}});
     list.push_back({{"id", c.id}, {"before", name(c.before)}, {"after", name(c.after)}, {"figures_moved", moved}});
   }
   return list;
@@ -36,7 +37,8 @@ nlohmann::json changesJson(const std::vector<CaseChange>& changes) {
 void printChanges(std::ostream& out, const char* label, const std::vector<CaseChange>& changes) {
   for (const CaseChange& c : changes) {
     out << "  " << label << "  " << c.id << ": " << name(c.before) << " -> " << name(c.after);
-    for (const FigureMove& m : c.moved) out << "; " << m.oracle << "." << m.figure << " " << m.before << " -> " << m.after;
+    for (const FigureMove& m : c.moved)
+      out << "; " << m.oracle << "." << m.figure << " " << m.before << " -> " << m.after;
     out << "\n";
   }
 }
@@ -87,9 +89,10 @@ nlohmann::json baselineJson(const BaselineDiff& d, const std::string& baselineFi
 }
 
 void printBaselineDiff(std::ostream& out, const BaselineDiff& d, const std::string& baselineFile) {
-  out << "baseline " << baselineFile << ": " << d.compared << " case(s) compared, " << d.newlyFailing.size() << " newly failing, "
-      << d.newlyWarning.size() << " newly warning, " << d.fixed.size() << " fixed, " << d.otherStatus.size() << " other status change(s), "
-      << d.figuresMoved.size() << " with figures moved, " << d.added.size() << " new, " << d.missing.size() << " not in this run\n";
+  out << "baseline " << baselineFile << ": " << d.compared << " case(s) compared, " << d.newlyFailing.size()
+      << " newly failing, " << d.newlyWarning.size() << " newly warning, " << d.fixed.size() << " fixed, "
+      << d.otherStatus.size() << " other status change(s), " << d.figuresMoved.size() << " with figures moved, "
+      << d.added.size() << " new, " << d.missing.size() << " not in this run\n";
   printChanges(out, "REGRESSED", d.newlyFailing);
   printChanges(out, "REGRESSED", d.newlyWarning);
   printChanges(out, "fixed    ", d.fixed);

@@ -26,14 +26,14 @@ struct CaseChange {
 };
 
 struct BaselineDiff {
-  std::vector<CaseChange> newlyFailing;   // now fail, crash or timeout; before anything else
-  std::vector<CaseChange> newlyWarning;   // now warn; before pass
-  std::vector<CaseChange> fixed;          // before fail, crash or timeout; now pass or warn
-  std::vector<CaseChange> otherStatus;    // any other change of status (to or from skip, warn to pass, crash to fail ...)
-  std::vector<CaseChange> figuresMoved;   // same status, some oracle figure moved
-  std::vector<std::string> added;         // in this run only
-  std::vector<std::string> missing;       // in the baseline only (another filter or shard, or removed)
-  std::size_t compared = 0;               // cases in both
+  std::vector<CaseChange> newlyFailing;  // now fail, crash or timeout; before anything else
+  std::vector<CaseChange> newlyWarning;  // now warn; before pass
+  std::vector<CaseChange> fixed;         // before fail, crash or timeout; now pass or warn
+  std::vector<CaseChange> otherStatus;  // any other change of status (to or from skip, warn to pass, crash to fail ...)
+  std::vector<CaseChange> figuresMoved;  // same status, some oracle figure moved
+  std::vector<std::string> added;        // in this run only
+  std::vector<std::string> missing;      // in the baseline only (another filter or shard, or removed)
+  std::size_t compared = 0;              // cases in both
   // A regression: a case newly failing or newly warning.
   bool regressed() const { return !newlyFailing.empty() || !newlyWarning.empty(); }
 };

@@ -11,11 +11,14 @@ std::uint8_t toByte(double v) { return static_cast<std::uint8_t>(std::lround(std
 }  // namespace
 
 io::Rgb8Image grayPreview(const ref::Image& image, double scale) {
-  io::Rgb8Image out{image.width, image.height, std::vector<std::uint8_t>(static_cast<std::size_t>(image.width) * image.height * 3)};
+  io::Rgb8Image out{image.width, image.height,
+                    std::vector<std::uint8_t>(static_cast<std::size_t>(image.width) * image.height * 3)};
   for (int j = 0; j < image.height; ++j)
     for (int i = 0; i < image.width; ++i) {
-      const std::uint8_t g = toByte(image.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * j] * scale);
-      std::uint8_t* px = &out.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * (image.height - 1 - j))];
+      const std::uint8_t g =
+          toByte(image.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * j] * scale);
+      std::uint8_t* px =
+          &out.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(image.width) * (image.height - 1 - j))];
       px[0] = px[1] = px[2] = g;
     }
   return out;
@@ -26,17 +29,27 @@ io::Rgb8Image errorMaskPreview(const ref::Image& base, double scale, const std::
   for (int j = 0; j < base.height; ++j)
     for (int i = 0; i < base.width; ++i) {
       const PixelFlag f = flags[static_cast<std::size_t>(i) + static_cast<std::size_t>(base.width) * j];
-      std::uint8_t* px = &out.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(base.width) * (base.height - 1 - j))];
+      std::uint8_t* px =
+          &out.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(base.width) * (base.height - 1 - j))];
       switch (f) {
-        case PixelFlag::ExactMismatch: px[0] = 255, px[1] = 0, px[2] = 0; break;
-        case PixelFlag::EnvelopeFail: px[0] = 255, px[1] = 0, px[2] = 255; break;
-        case PixelFlag::EnvelopeWarn: px[0] = 255, px[1] = 220, px[2] = 0; break;
-        case PixelFlag::None: break;
+        case PixelFlag::ExactMismatch:
+          px[0] = 255, px[1] = 0, px[2] = 0;
+          break;
+        case PixelFlag::EnvelopeFail:
+          px[0] = 255, px[1] = 0, px[2] = 255;
+          break;
+        case PixelFlag::EnvelopeWarn:
+          px[0] = 255, px[1] = 220, px[2] = 0;
+          break;
+        case PixelFlag::None:
+          break;
       }
     }
   return out;
 }
 
-std::string caseImageName(const std::string& caseId, const std::string& kind) { return "images/" + caseId + "." + kind + ".png"; }
+std::string caseImageName(const std::string& caseId, const std::string& kind) {
+  return "images/" + caseId + "." + kind + ".png";
+}
 
 }  // namespace voxref::conf

@@ -14,7 +14,9 @@ namespace {
 
 const std::string kToRoot = "../";  // from cases/ to the report directory
 
-std::string dump(const nlohmann::json& j, int indent = -1) { return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace); }
+std::string dump(const nlohmann::json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 double number(const nlohmann::json& j) { return j.is_number() ? j.get<double>() : std::nan(""); }
 
@@ -33,9 +35,9 @@ std::string failureTable(const nlohmann::json& failures) {
     const double v = f.contains("value") ? number(f["value"]) : std::nan("");
     const double lo = number(f["allowed"][0]), hi = number(f["allowed"][1]);
     const double outside = v < lo ? lo - v : v > hi ? v - hi : 0.0;
-    h << "<tr><td>" << htmlEscape(f.contains("sample") ? dump(f["sample"]) : "") << "</td><td class=\"num\">" << htmlNumber(v)
-      << "</td><td class=\"num\">[" << htmlNumber(lo) << ", " << htmlNumber(hi) << "]</td><td class=\"num\">" << htmlNumber(outside)
-      << "</td></tr>\n";
+    h << "<tr><td>" << htmlEscape(f.contains("sample") ? dump(f["sample"]) : "") << "</td><td class=\"num\">"
+      << htmlNumber(v) << "</td><td class=\"num\">[" << htmlNumber(lo) << ", " << htmlNumber(hi)
+      << "]</td><td class=\"num\">" << htmlNumber(outside) << "</td></tr>\n";
   }
   h << "</table>";
   return h.str();
@@ -49,12 +51,17 @@ std::string figuresHtml(const nlohmann::json& figures) {
   h << "<table class=\"figures\">";
   for (const auto& [key, value] : figures.items()) {
     h << "<tr><th>" << htmlEscape(key) << "</th><td>";
-    if (value.is_number()) h << "<span class=\"num\">" << htmlNumber(value.get<double>()) << "</span>";
-    else if (value.is_string()) h << htmlEscape(value.get<std::string>());
-    else if (isFailureList(value)) h << failureTable(value);
-    else if (value.is_primitive()) h << htmlEscape(dump(value));
-    else h << "<details><summary>" << htmlEscape(value.is_array() ? std::to_string(value.size()) + " entries" : "details") << "</summary><pre>"
-           << htmlEscape(dump(value, 1)) << "</pre></details>";
+    if (value.is_number())
+      h << "<span class=\"num\">" << htmlNumber(value.get<double>()) << "</span>";
+    else if (value.is_string())
+      h << htmlEscape(value.get<std::string>());
+    else if (isFailureList(value))
+      h << failureTable(value);
+    else if (value.is_primitive())
+      h << htmlEscape(dump(value));
+    else
+      h << "<details><summary>" << htmlEscape(value.is_array() ? std::to_string(value.size()) + " entries" : "details")
+        << "</summary><pre>" << htmlEscape(dump(value, 1)) << "</pre></details>";
     h << "</td></tr>";
   }
   h << "</table>";
@@ -67,10 +74,13 @@ void oraclesBlock(std::ostringstream& h, const CaseResult& r) {
     h << "<p>No oracle judged this case.</p>\n";
     return;
   }
-  h << "<table id=\"oracle-table\"><thead><tr><th>oracle</th><th>verdict</th><th>summary</th><th>figures</th></tr></thead><tbody>\n";
+  h << "<table "
+       "id=\"oracle-table\"><thead><tr><th>oracle</th><th>verdict</th><th>summary</th><th>figures</th></tr></"
+       "thead><tbody>\n";
   for (const OracleResult& o : r.oracles)
-    h << "<tr data-oracle=\"" << htmlEscape(o.oracle) << "\"><td>" << htmlEscape(o.oracle) << "</td><td>" << badge(name(o.verdict)) << "</td><td class=\"message\">"
-      << htmlEscape(o.summary) << "</td><td>" << figuresHtml(o.figures) << "</td></tr>\n";
+    h << "<tr data-oracle=\"" << htmlEscape(o.oracle) << "\"><td>" << htmlEscape(o.oracle) << "</td><td>"
+      << badge(name(o.verdict)) << "</td><td class=\"message\">" << htmlEscape(o.summary) << "</td><td>"
+      << figuresHtml(o.figures) << "</td></tr>\n";
   h << "</tbody></table>\n";
 }
 
@@ -84,29 +94,33 @@ void effectsAndFindings(std::ostringstream& h, const CaseResult& r) {
     h << "</ul>\n";
   }
   if (r.findings.empty()) return;
-  h << "<h2 id=\"findings\">Departures from GL semantics</h2>\n<table><tr><th>finding</th><th>what</th><th>figures</th></tr>\n";
+  h << "<h2 id=\"findings\">Departures from GL "
+       "semantics</h2>\n<table><tr><th>finding</th><th>what</th><th>figures</th></tr>\n";
   for (const Finding& f : r.findings)
-    h << "<tr><td><code>" << htmlEscape(f.id) << "</code></td><td>" << htmlEscape(f.description) << "</td><td>" << figuresHtml(f.figures) << "</td></tr>\n";
+    h << "<tr><td><code>" << htmlEscape(f.id) << "</code></td><td>" << htmlEscape(f.description) << "</td><td>"
+      << figuresHtml(f.figures) << "</td></tr>\n";
   h << "</table>\n";
 }
 
 void imagesBlock(std::ostringstream& h, const CaseResult& r) {
   h << "<h2 id=\"images\">Images</h2>\n";
-  const std::pair<const std::string*, const char*> images[] = {{&r.images.rendered, "rendered (GL)"},
-                                                               {&r.images.emulated, "emulated"},
-                                                               {&r.images.reference, "reference (double)"},
-                                                               {&r.images.errorMask, "error mask: red exact mismatch, magenta envelope failure, yellow warning"}};
+  const std::pair<const std::string*, const char*> images[] = {
+      {&r.images.rendered, "rendered (GL)"},
+      {&r.images.emulated, "emulated"},
+      {&r.images.reference, "reference (double)"},
+      {&r.images.errorMask, "error mask: red exact mismatch, magenta envelope failure, yellow warning"}};
   bool any = false;
   for (const auto& [path, caption] : images) any = any || !path->empty();
   if (!any) {
-    h << "<p>This case wrote no images (cases write them when they fail or warn, or with <code>--all-images</code>).</p>\n";
+    h << "<p>This case wrote no images (cases write them when they fail or warn, or with "
+         "<code>--all-images</code>).</p>\n";
     return;
   }
   h << "<div class=\"images\">";
   for (const auto& [path, caption] : images)
     if (!path->empty())
-      h << "<figure><a href=\"" << htmlEscape(kToRoot + *path) << "\"><img src=\"" << htmlEscape(kToRoot + *path) << "\" alt=\"" << caption
-        << "\"></a><figcaption>" << caption << "</figcaption></figure>";
+      h << "<figure><a href=\"" << htmlEscape(kToRoot + *path) << "\"><img src=\"" << htmlEscape(kToRoot + *path)
+        << "\" alt=\"" << caption << "\"></a><figcaption>" << caption << "</figcaption></figure>";
   h << "</div>\n";
 }
 
@@ -114,21 +128,26 @@ void imagesBlock(std::ostringstream& h, const CaseResult& r) {
 
 std::string htmlCasePage(const RunInfo& run, const CaseResult& r) {
   std::ostringstream h;
-  h << pageHead(r.id + " — voxref", run) << "<p><a href=\"" << kToRoot << "index.html\">← all cases</a></p>\n<h1><code>" << htmlEscape(r.id)
-    << "</code> <span id=\"case-status\" data-status=\"" << name(r.status) << "\">" << badge(name(r.status)) << "</span></h1>\n<p>"
-    << htmlEscape(r.description) << "</p>\n<table><tr><th>system</th><td>" << htmlEscape(r.system) << "</td></tr>";
+  h << pageHead(r.id + " — voxref", run) << "<p><a href=\"" << kToRoot << "index.html\">← all cases</a></p>\n<h1><code>"
+    << htmlEscape(r.id) << "</code> <span id=\"case-status\" data-status=\"" << name(r.status) << "\">"
+    << badge(name(r.status)) << "</span></h1>\n<p>" << htmlEscape(r.description)
+    << "</p>\n<table><tr><th>system</th><td>" << htmlEscape(r.system) << "</td></tr>";
   char secs[96];
   std::snprintf(secs, sizeof secs, "%.3f / %.3f / %.3f", r.secondsGl, r.secondsEmulation, r.secondsReference);
   h << "<tr><th>seconds (GL / emulation / reference)</th><td class=\"num\">" << secs << "</td></tr>";
-  if (r.timings.is_object() && !r.timings.empty()) h << "<tr><th>other times (wall clock)</th><td>" << figuresHtml(r.timings) << "</td></tr>";
+  if (r.timings.is_object() && !r.timings.empty())
+    h << "<tr><th>other times (wall clock)</th><td>" << figuresHtml(r.timings) << "</td></tr>";
   h << "</table>\n";
   const bool died = r.status == Status::Crash || r.status == Status::Timeout;
   if (!r.message.empty())
-    h << (died ? "<pre id=\"message\">" : "<p id=\"message\" class=\"message\">") << htmlEscape(r.message) << (died ? "</pre>\n" : "</p>\n");
+    h << (died ? "<pre id=\"message\">" : "<p id=\"message\" class=\"message\">") << htmlEscape(r.message)
+      << (died ? "</pre>\n" : "</p>\n");
   if (died || !r.stderrText.empty()) {
     h << "<h2 id=\"output\">Output of the case's process</h2>\n";
-    if (r.stderrText.empty()) h << "<p>None was kept.</p>\n";
-    else h << "<pre id=\"stderr\">" << htmlEscape(r.stderrText) << "</pre>\n";
+    if (r.stderrText.empty())
+      h << "<p>None was kept.</p>\n";
+    else
+      h << "<pre id=\"stderr\">" << htmlEscape(r.stderrText) << "</pre>\n";
   }
   oraclesBlock(h, r);
   effectsAndFindings(h, r);

@@ -69,15 +69,21 @@ const char* kSelfCheck = R"js(
 
 std::string pageHead(std::string_view title, const RunInfo& run) {
   std::string h = "<!doctype html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>" + htmlEscape(title) +
-                  "</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>" + kStyle + "</style>\n<script>" + kSelfCheck +
+                  "</title>\n<link rel=\"icon\" href=\"data:,\">\n<style>" + kStyle + "</style>\n<script>" +
+                  kSelfCheck +
                   "</script>\n</head><body>\n"
-                  "<div class=\"js-error-box\" hidden><p>This page hit errors in the browser:</p><ul id=\"js-errors\"></ul></div>\n";
+                  "<div class=\"js-error-box\" hidden><p>This page hit errors in the browser:</p><ul "
+                  "id=\"js-errors\"></ul></div>\n";
   if (!run.complete) {
     h += "<p class=\"partial\" id=\"partial\">partial report: ";
-    if (run.running) h += "the run is still going on; this snapshot holds the cases that finished so far.";
-    else h += "the run was interrupted" + (run.interruptedBy.empty() ? std::string() : " (" + htmlEscape(run.interruptedBy) + ")") +
-              "; it holds only the cases that finished" +
-              (run.notRun.empty() ? std::string(".") : "; " + std::to_string(run.notRun.size()) + " selected case(s) did not run.");
+    if (run.running)
+      h += "the run is still going on; this snapshot holds the cases that finished so far.";
+    else
+      h += "the run was interrupted" +
+           (run.interruptedBy.empty() ? std::string() : " (" + htmlEscape(run.interruptedBy) + ")") +
+           "; it holds only the cases that finished" +
+           (run.notRun.empty() ? std::string(".")
+                               : "; " + std::to_string(run.notRun.size()) + " selected case(s) did not run.");
     h += "</p>\n";
   }
   return h;

@@ -1,9 +1,9 @@
 #include "conformance/framework/report/html_report.h"
 
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/html_case_page.h"
 #include "conformance/framework/report/html_escape.h"
 #include "conformance/framework/report/html_index.h"
+#include "conformance/io/atomic_file.h"
 
 namespace voxref::conf {
 

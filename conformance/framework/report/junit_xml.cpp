@@ -8,14 +8,26 @@ namespace voxref::conf {
 std::string xmlEscape(const std::string& s) {
   std::string out;
   for (char c : s) switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
       default:
-        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t') out += ' ';
-        else out += c;
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\n' && c != '\t')
+          out += ' ';
+        else
+          out += c;
     }
   return out;
 }
@@ -41,14 +53,22 @@ std::string junitXml(const std::vector<CaseResult>& results) {
         << r->secondsGl + r->secondsEmulation + r->secondsReference << "\">\n";
       const std::string msg = xmlEscape(r->message);
       switch (r->status) {
-        case Status::Fail: x << "      <failure message=\"" << msg << "\"/>\n"; break;
+        case Status::Fail:
+          x << "      <failure message=\"" << msg << "\"/>\n";
+          break;
         case Status::Crash:
-        case Status::Timeout: x << "      <error type=\"" << name(r->status) << "\" message=\"" << msg << "\"/>\n"; break;
-        case Status::Skip: x << "      <skipped message=\"" << msg << "\"/>\n"; break;
-        default: break;
+        case Status::Timeout:
+          x << "      <error type=\"" << name(r->status) << "\" message=\"" << msg << "\"/>\n";
+          break;
+        case Status::Skip:
+          x << "      <skipped message=\"" << msg << "\"/>\n";
+          break;
+        default:
+          break;
       }
       x << "      <system-out>";
-      for (const OracleResult& o : r->oracles) x << xmlEscape(o.oracle + " " + std::string(name(o.verdict)) + ": " + o.summary) << "\n";
+      for (const OracleResult& o : r->oracles)
+        x << xmlEscape(o.oracle + " " + std::string(name(o.verdict)) + ": " + o.summary) << "\n";
       x << "</system-out>\n    </testcase>\n";
     }
     x << "  </testsuite>\n";

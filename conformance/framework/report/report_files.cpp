@@ -2,9 +2,9 @@
 
 #include <ctime>
 
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/html_report.h"
 #include "conformance/framework/report/junit_xml.h"
+#include "conformance/io/atomic_file.h"
 
 namespace voxref::conf {
 

@@ -10,7 +10,8 @@ nlohmann::json caseJson(const CaseResult& r) {
   for (const OracleResult& o : r.oracles)
     oracles[o.oracle] = {{"verdict", name(o.verdict)}, {"summary", o.summary}, {"figures", o.figures}};
   nlohmann::json findings = nlohmann::json::array();
-  for (const Finding& f : r.findings) findings.push_back({{"id", f.id}, {"description", f.description}, {"figures", f.figures}});
+  for (const Finding& f : r.findings)
+    findings.push_back({{"id", f.id}, {"description", f.description}, {"figures", f.figures}});
   nlohmann::json images = nlohmann::json::object();
   if (!r.images.rendered.empty()) images["rendered"] = r.images.rendered;
   if (!r.images.emulated.empty()) images["emulated"] = r.images.emulated;
@@ -19,8 +20,13 @@ nlohmann::json caseJson(const CaseResult& r) {
   nlohmann::json worst = nlohmann::json::array();
   for (const PixelValues& p : r.worstPixels) {
     auto num = [](double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); };
-    nlohmann::json w = {{"x", p.x}, {"y", p.y}, {"k", p.k}, {"oracle", p.oracle},
-                        {"gl", num(p.gl)}, {"emulated", num(p.emulated)}, {"reference", num(p.reference)}};
+    nlohmann::json w = {{"x", p.x},
+                        {"y", p.y},
+                        {"k", p.k},
+                        {"oracle", p.oracle},
+                        {"gl", num(p.gl)},
+                        {"emulated", num(p.emulated)},
+                        {"reference", num(p.reference)}};
     if (p.allowed) w["allowed"] = {p.allowed->first, p.allowed->second};
     worst.push_back(w);
   }

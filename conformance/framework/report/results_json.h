@@ -13,15 +13,15 @@
 namespace voxref::conf {
 
 struct RunInfo {
-  nlohmann::json driver;       // driverJson()
-  std::string command;         // the command line
-  std::string started, finished;  // ISO 8601, UTC
-  bool complete = true;        // false when the run was interrupted
-  bool running = false;        // a snapshot written while the run goes on (complete is false)
-  std::string interruptedBy;   // "SIGINT" or "SIGTERM" when !complete
-  std::vector<std::string> notRun;  // ids selected but not run (an interrupted run)
+  nlohmann::json driver;                                // driverJson()
+  std::string command;                                  // the command line
+  std::string started, finished;                        // ISO 8601, UTC
+  bool complete = true;                                 // false when the run was interrupted
+  bool running = false;                                 // a snapshot written while the run goes on (complete is false)
+  std::string interruptedBy;                            // "SIGINT" or "SIGTERM" when !complete
+  std::vector<std::string> notRun;                      // ids selected but not run (an interrupted run)
   nlohmann::json execution = nlohmann::json::object();  // isolation, jobs, shard, time limit
-  nlohmann::json baseline;     // baselineJson() when --baseline was given, else null
+  nlohmann::json baseline;                              // baselineJson() when --baseline was given, else null
 };
 
 nlohmann::json caseJson(const CaseResult& r);

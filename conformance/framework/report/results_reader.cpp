@@ -33,14 +33,17 @@ double numberValue(const nlohmann::json& v, const std::string& what) {
   return v.get<double>();
 }
 
-double number(const nlohmann::json& j, const char* key, const std::string& where) { return numberValue(field(j, key, where), where + "." + key); }
+double number(const nlohmann::json& j, const char* key, const std::string& where) {
+  return numberValue(field(j, key, where), where + "." + key);
+}
 
 // An int, checked before it is converted (a NaN or 1e300 converted into an int is undefined).
 int integer(const nlohmann::json& j, const char* key, const std::string& where) {
   const nlohmann::json& v = field(j, key, where);
-  const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
-                                           : v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
-                                                 v.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  const bool fits = v.is_number_unsigned()
+                        ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                        : v.is_number_integer() && v.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                              v.get<std::int64_t>() <= std::numeric_limits<int>::max();
   if (!fits) throw ResultsFormatError(where + "." + key + ": expected an integer (an int), got " + v.dump());
   return static_cast<int>(v.get<std::int64_t>());
 }
@@ -72,7 +75,8 @@ CaseResult caseFromJson(const nlohmann::json& j) {
   const nlohmann::json& findings = field(j, "findings", where);
   if (!findings.is_array()) throw ResultsFormatError(where + ".findings: expected an array");
   for (const auto& f : findings)
-    r.findings.push_back({text(f, "id", where + ".findings"), text(f, "description", where + ".findings"), field(f, "figures", where + ".findings")});
+    r.findings.push_back({text(f, "id", where + ".findings"), text(f, "description", where + ".findings"),
+                          field(f, "figures", where + ".findings")});
   r.figures = field(j, "figures", where);
   r.secondsGl = number(j, "seconds_gl", where);
   r.secondsEmulation = number(j, "seconds_emulation", where);
@@ -126,7 +130,8 @@ LoadedResults parseResults(std::string_view bytes, const std::string& where) {
   if (!doc.is_object() || !doc.contains("format") || doc["format"] != "voxref-results")
     throw ResultsFormatError(where + ": not a voxref results file (\"format\" is not \"voxref-results\")");
   if (!doc.contains("format_version") || doc["format_version"] != 1)
-    throw ResultsFormatError(where + ": results format version " + (doc.contains("format_version") ? doc["format_version"].dump() : "(none)") +
+    throw ResultsFormatError(where + ": results format version " +
+                             (doc.contains("format_version") ? doc["format_version"].dump() : "(none)") +
                              " (this voxref reads version 1)");
   const nlohmann::json& cases = field(out.document, "cases", where);
   if (!cases.is_array()) throw ResultsFormatError(where + ".cases: expected an array");

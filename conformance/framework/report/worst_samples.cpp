@@ -10,7 +10,9 @@ std::vector<std::size_t> largestScores(const std::vector<double>& scores, std::s
   std::vector<std::size_t> idx;
   for (std::size_t i = 0; i < scores.size(); ++i)
     if (scores[i] > 0.0) idx.push_back(i);  // false for NaN
-  const auto worse = [&](std::size_t a, std::size_t b) { return scores[a] != scores[b] ? scores[a] > scores[b] : a < b; };
+  const auto worse = [&](std::size_t a, std::size_t b) {
+    return scores[a] != scores[b] ? scores[a] > scores[b] : a < b;
+  };
   const std::size_t keep = std::min(n, idx.size());
   std::partial_sort(idx.begin(), idx.begin() + static_cast<std::ptrdiff_t>(keep), idx.end(), worse);
   idx.resize(keep);

@@ -5,15 +5,15 @@
 #include <cmath>
 
 #include "conformance/framework/case_context.h"
+#include "conformance/framework/report/case_images.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/image_io.h"
 #include "conformance/modules/iso/iso_session.h"
 #include "conformance/modules/iso/mesh_image_compare.h"
 #include "conformance/modules/iso/surface_accuracy.h"
-#include "conformance/framework/report/case_images.h"
-#include "gpu/iso_gl.h"
 #include "fixtures/raycast/mesh_raycast.h"
 #include "fixtures/raycast/trilinear_isosurface.h"
+#include "gpu/iso_gl.h"
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/extraction.h"
 #include "reference/iso/grid_field.h"
@@ -47,7 +47,8 @@ void showFrame(CaseContext& ctx, CaseResult& r, const ShownFrame& shown, bool wr
   }
   if (!writeImages) return;
   const std::size_t n = static_cast<std::size_t>(f.gl.width) * static_cast<std::size_t>(f.gl.height);
-  ref::Image glShade{f.gl.width, f.gl.height, std::vector<double>(n)}, truthShade{f.truth.width, f.truth.height, std::vector<double>(n)};
+  ref::Image glShade{f.gl.width, f.gl.height, std::vector<double>(n)},
+      truthShade{f.truth.width, f.truth.height, std::vector<double>(n)};
   std::vector<PixelFlag> flags(n, PixelFlag::None);
   for (std::size_t i = 0; i < n; ++i) {
     glShade.pixels[i] = (f.gl.rgba[i][0] + f.gl.rgba[i][1] + f.gl.rgba[i][2]) / (3.0 * 255.0);
@@ -70,12 +71,16 @@ constexpr const char* kPrimitiveIdFinding = "gl.fragment.primitive_id_without_ge
 
 std::optional<Finding> primitiveIdFinding(const gpu::PrimitiveIdCheck& c) {
   if (!c.driverDropsPrimitiveIdDraws()) return std::nullopt;
-  return Finding{kPrimitiveIdFinding,
-                 "a fragment shader that reads gl_PrimitiveID with no geometry shader bound draws " + std::to_string(c.drawnWithId) + " of " +
-                     std::to_string(c.pixels) + " pixels of a triangle that covers the target, and raises no GL error; the same program writing a "
-                     "constant id draws all " + std::to_string(c.drawnByControl) + " (GL 4.6 section 15.2.2: without a geometry shader "
-                     "gl_PrimitiveID is the primitive's number in the draw)",
-                 {{"check_pixels", c.pixels}, {"drawn_with_primitive_id", c.drawnWithId}, {"drawn_by_control", c.drawnByControl}}};
+  return Finding{
+      kPrimitiveIdFinding,
+      "a fragment shader that reads gl_PrimitiveID with no geometry shader bound draws " +
+          std::to_string(c.drawnWithId) + " of " + std::to_string(c.pixels) +
+          " pixels of a triangle that covers the target, and raises no GL error; the same program writing a "
+          "constant id draws all " +
+          std::to_string(c.drawnByControl) +
+          " (GL 4.6 section 15.2.2: without a geometry shader "
+          "gl_PrimitiveID is the primitive's number in the draw)",
+      {{"check_pixels", c.pixels}, {"drawn_with_primitive_id", c.drawnWithId}, {"drawn_by_control", c.drawnByControl}}};
 }
 
 CaseResult notRun(CaseResult r, const std::string& why) {
@@ -134,9 +139,11 @@ void addFrame(FramesTally& t, const IsoFrame& f) {
 OracleResult occlusionOracle(const FramesTally& t, bool cullEveryTested) {
   const double efficiency = t.invisible == 0 ? 0.0 : static_cast<double>(t.culledInvisible) / t.invisible;
   const bool ok = cullEveryTested ? t.falseCulls > 0 : t.falseCulls == 0;
-  return {"occlusion", ok ? Verdict::Pass : Verdict::Fail,
-          std::to_string(t.falseCulls) + " false culls over " + std::to_string(t.frames) + " frames; " + std::to_string(t.tests) +
-              " occlusion tests; culled " + std::to_string(t.culledInvisible) + " of " + std::to_string(t.invisible) + " invisible candidates (" +
+  return {"occlusion",
+          ok ? Verdict::Pass : Verdict::Fail,
+          std::to_string(t.falseCulls) + " false culls over " + std::to_string(t.frames) + " frames; " +
+              std::to_string(t.tests) + " occlusion tests; culled " + std::to_string(t.culledInvisible) + " of " +
+              std::to_string(t.invisible) + " invisible candidates (" +
               std::to_string(std::lround(100.0 * efficiency)) + " %)",
           {{"false_culls", t.falseCulls}, {"efficiency", efficiency}, {"tests", t.tests}}};
 }
@@ -145,17 +152,23 @@ OracleResult occlusionOracle(const FramesTally& t, bool cullEveryTested) {
 // finding that explains missing pixels.
 OracleResult meshImageOracle(const FramesTally& t, const std::string& driverNote) {
   const bool agree = t.coverageFail == 0 && t.depthFail == 0 && t.visibilityFail == 0;
-  return {"mesh_image", agree ? Verdict::Pass : Verdict::Fail,
-          std::to_string(t.coverageFail) + " coverage, " + std::to_string(t.depthFail) + " depth and " + std::to_string(t.visibilityFail) +
-              " visibility failures" + driverNote + "; " + std::to_string(t.same) + " pixels show the same triangle, " + std::to_string(t.otherAllowed) +
-              " another one within the snapping allowance; worst depth " + std::to_string(t.worstOverBound) + " of its allowance (" +
-              std::to_string(t.worstDepth) + " grid units)",
-          {{"coverage_failures", t.coverageFail}, {"depth_failures", t.depthFail}, {"visibility_failures", t.visibilityFail},
-           {"same_triangle_pixels", t.same}, {"other_triangle_allowed", t.otherAllowed}}};
+  return {"mesh_image",
+          agree ? Verdict::Pass : Verdict::Fail,
+          std::to_string(t.coverageFail) + " coverage, " + std::to_string(t.depthFail) + " depth and " +
+              std::to_string(t.visibilityFail) + " visibility failures" + driverNote + "; " + std::to_string(t.same) +
+              " pixels show the same triangle, " + std::to_string(t.otherAllowed) +
+              " another one within the snapping allowance; worst depth " + std::to_string(t.worstOverBound) +
+              " of its allowance (" + std::to_string(t.worstDepth) + " grid units)",
+          {{"coverage_failures", t.coverageFail},
+           {"depth_failures", t.depthFail},
+           {"visibility_failures", t.visibilityFail},
+           {"same_triangle_pixels", t.same},
+           {"other_triangle_allowed", t.otherAllowed}}};
 }
 
 // Occlusion and mesh-image oracles over every frame of a scene.
-CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::string& description, const IsoScene& scene, bool expectEmpty) {
+CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::string& description, const IsoScene& scene,
+                       bool expectEmpty) {
   CaseResult r;
   r.id = id;
   r.system = "iso";
@@ -171,22 +184,30 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
   FramesTally t;
   for (const IsoFrame& f : frames) addFrame(t, f);
   r.figures["frames"] = t.perFrame;
-  r.figures["scene"] = {{"data", scene.data},           {"dims", scene.dims},
-                        {"isovalue", scene.isovalue},   {"frames", scene.path.frames},
-                        {"threshold_px", scene.budget.threshold}, {"max_splits", scene.budget.maxSplits}};
+  r.figures["scene"] = {{"data", scene.data},
+                        {"dims", scene.dims},
+                        {"isovalue", scene.isovalue},
+                        {"frames", scene.path.frames},
+                        {"threshold_px", scene.budget.threshold},
+                        {"max_splits", scene.budget.maxSplits}};
   if (primitiveId) {  // findings inform; the verdict stays the mesh image's
     Finding f = *primitiveId;
     f.figures["samples_changed"] = t.coverageFail;  // pixels the truth covers that GL left empty
     r.findings.push_back(f);
   }
-  const std::string driverNote =
-      primitiveId && t.coverageFail > 0 ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " + std::string(kPrimitiveIdFinding) + ")" : "";
+  const std::string driverNote = primitiveId && t.coverageFail > 0
+                                     ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " +
+                                           std::string(kPrimitiveIdFinding) + ")"
+                                     : "";
   r.oracles = {occlusionOracle(t, scene.cullEveryTested), meshImageOracle(t, driverNote)};
   if (expectEmpty)
-    r.oracles.push_back({"empty", t.triangles == 0 ? Verdict::Pass : Verdict::Fail,
-                         std::to_string(t.triangles) + " triangles for an isovalue outside the data range", {}});
+    r.oracles.push_back({"empty",
+                         t.triangles == 0 ? Verdict::Pass : Verdict::Fail,
+                         std::to_string(t.triangles) + " triangles for an isovalue outside the data range",
+                         {}});
   concludeFromOracles(r);
-  if (t.shown.frame) showFrame(ctx, r, t.shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
+  if (t.shown.frame)
+    showFrame(ctx, r, t.shown, ctx.writeAllImages() || r.status == Status::Fail || r.status == Status::Warn);
   return r;
 }
 
@@ -214,8 +235,9 @@ CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene
                     {"mean_depth_error", e.meanDepth},
                     {"max_depth_error", e.maxDepth},
                     {"silhouette_pixels", e.silhouettePixels}});
-    summary += "threshold " + std::to_string(threshold).substr(0, 4) + ": " + std::to_string(surface.stats.triangles) + " triangles, mean depth error " +
-               std::to_string(e.meanDepth).substr(0, 6) + ", " + std::to_string(e.silhouettePixels) + " silhouette px; ";
+    summary += "threshold " + std::to_string(threshold).substr(0, 4) + ": " + std::to_string(surface.stats.triangles) +
+               " triangles, mean depth error " + std::to_string(e.meanDepth).substr(0, 6) + ", " +
+               std::to_string(e.silhouettePixels) + " silhouette px; ";
   }
   r.figures["thresholds"] = rows;
   r.timings["thresholds"] = seconds;
@@ -229,11 +251,14 @@ CaseResult judgeAccuracy(CaseContext& ctx, const std::string& id, const IsoScene
 std::vector<Case> isoCases() {
   std::vector<Case> cases;
   auto frames = [&](const std::string& id, const std::string& description, const IsoScene& s, bool empty) {
-    cases.push_back({id, "iso", description, [=](CaseContext& ctx) { return judgeFrames(ctx, id, description, s, empty); }, std::nullopt});
+    cases.push_back({id, "iso", description,
+                     [=](CaseContext& ctx) { return judgeFrames(ctx, id, description, s, empty); }, std::nullopt});
   };
   for (const IsoScene& s : builtInIsoScenes()) {
-    frames("iso.frames." + s.name, "occlusion culling never culls a visible diamond, and GL draws each frame's mesh as Embree sees it (" + s.data + ")", s,
-           false);
+    frames("iso.frames." + s.name,
+           "occlusion culling never culls a visible diamond, and GL draws each frame's mesh as Embree sees it (" +
+               s.data + ")",
+           s, false);
     const std::string id = "iso.accuracy." + s.name;
     cases.push_back({id, "iso", "extracted vs exact trilinear isosurface per error threshold (" + s.data + ")",
                      [=](CaseContext& ctx) { return judgeAccuracy(ctx, id, s); }, std::nullopt});
@@ -242,8 +267,8 @@ std::vector<Case> isoCases() {
   broken.name = "broken_culler_is_caught";
   broken.path.frames = 3;
   broken.cullEveryTested = true;
-  frames("iso.control.broken_culler_is_caught", "negative control: a culler that culls every diamond it tests is caught culling visible ones", broken,
-         false);
+  frames("iso.control.broken_culler_is_caught",
+         "negative control: a culler that culls every diamond it tests is caught culling visible ones", broken, false);
   for (const IsoScene& s : hardIsoScenes())
     frames("iso.hard." + s.name, "hard case " + s.name + ": occlusion and mesh images through the frame loop", s,
            s.name == "isovalue_outside_range" || s.name == "empty_volume" || s.name == "full_volume");

@@ -30,8 +30,8 @@ std::vector<T> topFirst(const fx::RayImage& img, Fn value) {
   return out;
 }
 
-void writeRayImage(const std::filesystem::path& path, const fx::RayImage& img, const std::string& idName, bool withItems,
-                   const std::map<std::string, std::string>& attributes) {
+void writeRayImage(const std::filesystem::path& path, const fx::RayImage& img, const std::string& idName,
+                   bool withItems, const std::map<std::string, std::string>& attributes) {
   std::vector<io::ExrChannel> channels;
   channels.push_back({"Z", topFirst<float>(img, [&](std::size_t i) { return img.depth[i]; }), {}});
   channels.push_back({"N.x", topFirst<float>(img, [&](std::size_t i) { return img.normal[i].x; }), {}});
@@ -39,7 +39,8 @@ void writeRayImage(const std::filesystem::path& path, const fx::RayImage& img, c
   channels.push_back({"N.z", topFirst<float>(img, [&](std::size_t i) { return img.normal[i].z; }), {}});
   channels.push_back({"Y", topFirst<float>(img, [&](std::size_t i) { return img.shade[i]; }), {}});
   channels.push_back({idName, {}, topFirst<std::uint32_t>(img, [&](std::size_t i) { return img.primitive[i]; })});
-  if (withItems) channels.push_back({"item", {}, topFirst<std::uint32_t>(img, [&](std::size_t i) { return img.item[i]; })});
+  if (withItems)
+    channels.push_back({"item", {}, topFirst<std::uint32_t>(img, [&](std::size_t i) { return img.item[i]; })});
   io::writeExr(path, img.width, img.height, channels, attributes);
 }
 
@@ -61,7 +62,8 @@ std::vector<std::string> writeScene(const std::filesystem::path& dir, const IsoS
     const ref::IsoMesh mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, scene.isovalue);
     const std::string base = scene.name + "/" + frameName(f);
     writeRayImage(dir / (base + "_mesh.exr"), fx::castMesh(mesh, camera, threads), "primitive", true, attributes);
-    writeRayImage(dir / (base + "_exact.exr"), fx::castTrilinearIsosurface(volume, scene.isovalue, camera, threads), "cell", false, attributes);
+    writeRayImage(dir / (base + "_exact.exr"), fx::castTrilinearIsosurface(volume, scene.isovalue, camera, threads),
+                  "cell", false, attributes);
     files.push_back(base + "_mesh.exr");
     files.push_back(base + "_exact.exr");
     if (progress) progress(base);
@@ -78,8 +80,9 @@ nlohmann::json generateIsoFixtures(const std::filesystem::path& dirIn, const std
     try {
       validateIsoScene(s);
     } catch (const std::exception& e) {
-      throw std::invalid_argument("scene '" + s.name + "' (" + (s.volumeFile.empty() ? s.data : s.volumeFile.string()) + ", " +
-                                  std::to_string(s.dims[0]) + "x" + std::to_string(s.dims[1]) + "x" + std::to_string(s.dims[2]) + "): " + e.what());
+      throw std::invalid_argument("scene '" + s.name + "' (" + (s.volumeFile.empty() ? s.data : s.volumeFile.string()) +
+                                  ", " + std::to_string(s.dims[0]) + "x" + std::to_string(s.dims[1]) + "x" +
+                                  std::to_string(s.dims[2]) + "): " + e.what());
     }
   }
   const std::filesystem::path dir = dirIn.filename().empty() ? dirIn.parent_path() : dirIn;  // "fx/" is "fx"
@@ -89,9 +92,11 @@ nlohmann::json generateIsoFixtures(const std::filesystem::path& dirIn, const std
   // Everything is made in a staging folder beside dir (the same file system, so renames), which
   // goes whatever happens: a failure part way (a volume that is missing or of the wrong size, a
   // full disk) leaves nothing behind, not even dir.
-  const std::filesystem::path staging = dir.parent_path() / (dir.filename().string() + ".tmp" + std::to_string(::getpid()));
+  const std::filesystem::path staging =
+      dir.parent_path() / (dir.filename().string() + ".tmp" + std::to_string(::getpid()));
   const io::TemporaryFolder stagingFolder(staging);
-  nlohmann::json manifest{{"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
+  nlohmann::json manifest{
+      {"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
   try {
     for (const IsoScene& s : scenes) {
       manifest["scenes"].push_back(toJson(s));
@@ -101,7 +106,8 @@ nlohmann::json generateIsoFixtures(const std::filesystem::path& dirIn, const std
     io::writeFileAtomically(staging / "manifest.json", manifest.dump(2) + "\n");
   } catch (const io::IoError& e) {  // named by the destination the user gave, not the staging folder
     std::string what = e.what();
-    for (std::size_t at = what.find(staging.string()); at != std::string::npos; at = what.find(staging.string(), at + dir.string().size()))
+    for (std::size_t at = what.find(staging.string()); at != std::string::npos;
+         at = what.find(staging.string(), at + dir.string().size()))
       what.replace(at, staging.string().size(), dir.string());
     throw io::IoError(what + " (while staging in " + staging.string() + ", removed)");
   }
@@ -113,19 +119,23 @@ nlohmann::json generateIsoFixtures(const std::filesystem::path& dirIn, const std
   for (const std::string& f : moves) {
     io::ensureDirectory((dir / f).parent_path());
     std::filesystem::rename(staging / f, dir / f, ec);
-    if (ec) throw io::IoError("cannot move " + (staging / f).string() + " to " + (dir / f).string() + ": " + ec.message());
+    if (ec)
+      throw io::IoError("cannot move " + (staging / f).string() + " to " + (dir / f).string() + ": " + ec.message());
   }
   return manifest;
 }
 
-std::vector<FixtureMismatch> verifyIsoFixtures(const std::filesystem::path& dir, int threads, const std::function<void(const std::string&)>& progress) {
+std::vector<FixtureMismatch> verifyIsoFixtures(const std::filesystem::path& dir, int threads,
+                                               const std::function<void(const std::string&)>& progress) {
   const std::filesystem::path manifestPath = dir / "manifest.json";
   const IsoFixtureManifest manifest = parseIsoFixtureManifest(io::readWholeFile(manifestPath), manifestPath.string());
   std::vector<FixtureMismatch> problems;
   if (manifest.generator != kFixtureGenerator)
-    problems.push_back({"manifest.json", "generated by '" + (manifest.generator.empty() ? std::string("?") : manifest.generator) + "', this is '" +
-                                             kFixtureGenerator + "'"});
-  const std::filesystem::path scratch = std::filesystem::temp_directory_path() / ("voxref-fixtures-verify-" + std::to_string(::getpid()));
+    problems.push_back({"manifest.json", "generated by '" +
+                                             (manifest.generator.empty() ? std::string("?") : manifest.generator) +
+                                             "', this is '" + kFixtureGenerator + "'"});
+  const std::filesystem::path scratch =
+      std::filesystem::temp_directory_path() / ("voxref-fixtures-verify-" + std::to_string(::getpid()));
   // The scratch folder goes whatever happens (it was left behind when regeneration threw).
   const io::TemporaryFolder scratchFolder(scratch);
   nlohmann::json again;
@@ -146,7 +156,8 @@ std::vector<FixtureMismatch> verifyIsoFixtures(const std::filesystem::path& dir,
       continue;
     }
     const std::string fresh = io::sha256OfFile(scratch / path);
-    if (fresh != listed) problems.push_back({path, "regenerated sha256 " + fresh + " differs from the manifest's " + listed});
+    if (fresh != listed)
+      problems.push_back({path, "regenerated sha256 " + fresh + " differs from the manifest's " + listed});
     std::error_code ec;
     if (!std::filesystem::is_regular_file(dir / path, ec)) {
       problems.push_back({path, "missing"});
@@ -154,7 +165,8 @@ std::vector<FixtureMismatch> verifyIsoFixtures(const std::filesystem::path& dir,
       problems.push_back({path, "the file's sha256 " + stored + " differs from the manifest's " + listed});
     }
   }
-  for (const std::string& extra : regenerated) problems.push_back({extra, "produced by the parameters but not in the manifest"});
+  for (const std::string& extra : regenerated)
+    problems.push_back({extra, "produced by the parameters but not in the manifest"});
   return problems;
 }
 

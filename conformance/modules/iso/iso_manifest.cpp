@@ -9,7 +9,8 @@ namespace {
 
 // A scene's files are written under <dir>/<name>/: the name must be one plain path component.
 bool plainName(std::string_view n) {
-  return !n.empty() && n != "." && n != ".." && n.find('/') == std::string_view::npos && n.find('\0') == std::string_view::npos;
+  return !n.empty() && n != "." && n != ".." && n.find('/') == std::string_view::npos &&
+         n.find('\0') == std::string_view::npos;
 }
 
 // A file's path must stay inside the fixture directory: relative, no "." or ".." component.
@@ -26,7 +27,8 @@ bool insideDirectory(std::string_view p) {
 }
 
 bool sha256Hex(std::string_view s) {
-  return s.size() == 64 && std::all_of(s.begin(), s.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+  return s.size() == 64 &&
+         std::all_of(s.begin(), s.end(), [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
 }
 
 }  // namespace
@@ -60,7 +62,8 @@ IsoFixtureManifest parseIsoFixtureManifest(std::string_view bytes, const std::st
       fail(at + "." + e.what());
     }
     if (!plainName(m.scenes.back().name))
-      fail(at + ".name: '" + m.scenes.back().name + "' is not a plain file name (the scene's files are written under it)");
+      fail(at + ".name: '" + m.scenes.back().name +
+           "' is not a plain file name (the scene's files are written under it)");
   }
   const auto files = d.find("files");
   if (files == d.end() || !files->is_array()) fail("files: expected an array");
@@ -72,7 +75,8 @@ IsoFixtureManifest parseIsoFixtureManifest(std::string_view bytes, const std::st
     if (path == f.end() || !path->is_string()) fail(at + ".path: expected a string");
     if (sha == f.end() || !sha->is_string()) fail(at + ".sha256: expected a string");
     IsoFixtureFile file{path->get<std::string>(), sha->get<std::string>()};
-    if (!insideDirectory(file.path)) fail(at + ".path: '" + file.path + "' is not a relative path inside the fixture directory");
+    if (!insideDirectory(file.path))
+      fail(at + ".path: '" + file.path + "' is not a relative path inside the fixture directory");
     if (!sha256Hex(file.sha256)) fail(at + ".sha256: expected 64 lowercase hexadecimal digits");
     m.files.push_back(std::move(file));
   }

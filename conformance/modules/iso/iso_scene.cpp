@@ -13,16 +13,28 @@ namespace voxref::conf {
 
 nlohmann::json toJson(const IsoScene& s) {
   const auto v3 = [](const glm::dvec3& v) { return nlohmann::json::array({v.x, v.y, v.z}); };
-  return {{"name", s.name},
-          {"data", s.data},
-          {"volume_file", s.volumeFile.string()},
-          {"volume_uint16", s.volumeIsUint16},
-          {"dims", s.dims},
-          {"isovalue", s.isovalue},
-          {"orbit", {{"center", v3(s.path.center)}, {"radius", s.path.radius}, {"elevation_deg", s.path.elevationDegrees},
-                     {"azimuth_start_deg", s.path.azimuthStartDegrees}, {"azimuth_end_deg", s.path.azimuthEndDegrees}, {"frames", s.path.frames}}},
-          {"camera", {{"width", s.camera.width}, {"height", s.camera.height}, {"fov_y_deg", s.camera.fovYDegrees}, {"near", s.camera.nearPlane}, {"far", s.camera.farPlane}}},
-          {"refinement", {{"threshold_px", s.budget.threshold}, {"max_splits", s.budget.maxSplits}, {"max_merges", s.budget.maxMerges}}}};
+  return {
+      {"name", s.name},
+      {"data", s.data},
+      {"volume_file", s.volumeFile.string()},
+      {"volume_uint16", s.volumeIsUint16},
+      {"dims", s.dims},
+      {"isovalue", s.isovalue},
+      {"orbit",
+       {{"center", v3(s.path.center)},
+        {"radius", s.path.radius},
+        {"elevation_deg", s.path.elevationDegrees},
+        {"azimuth_start_deg", s.path.azimuthStartDegrees},
+        {"azimuth_end_deg", s.path.azimuthEndDegrees},
+        {"frames", s.path.frames}}},
+      {"camera",
+       {{"width", s.camera.width},
+        {"height", s.camera.height},
+        {"fov_y_deg", s.camera.fovYDegrees},
+        {"near", s.camera.nearPlane},
+        {"far", s.camera.farPlane}}},
+      {"refinement",
+       {{"threshold_px", s.budget.threshold}, {"max_splits", s.budget.maxSplits}, {"max_merges", s.budget.maxMerges}}}};
 }
 
 IsoScene isoSceneFromJson(const nlohmann::json& j) {
@@ -67,11 +79,14 @@ void validateIsoScene(const IsoScene& s) {
   // What regenerating the scene would refuse is refused here, naming the field: a data name that is
   // no field, and an orbit or camera that is degenerate at some frame (fov, near and far, eye on
   // the target).
-  if (!std::isfinite(s.isovalue)) throw JsonFieldError("isovalue: expected a finite number, got " + std::to_string(s.isovalue));
+  if (!std::isfinite(s.isovalue))
+    throw JsonFieldError("isovalue: expected a finite number, got " + std::to_string(s.isovalue));
   for (std::size_t a = 0; a < 3; ++a)
     if (s.dims[a] < 1 || s.dims[a] > kMaxIsoSceneExtent)
-      throw JsonFieldError("dims[" + std::to_string(a) + "]: expected 1.." + std::to_string(kMaxIsoSceneExtent) + ", got " + std::to_string(s.dims[a]));
-  if (s.volumeFile.empty() && s.data != "single_voxel" && s.data != "plateau" && s.data != "empty" && s.data != "full") {
+      throw JsonFieldError("dims[" + std::to_string(a) + "]: expected 1.." + std::to_string(kMaxIsoSceneExtent) +
+                           ", got " + std::to_string(s.dims[a]));
+  if (s.volumeFile.empty() && s.data != "single_voxel" && s.data != "plateau" && s.data != "empty" &&
+      s.data != "full") {
     try {
       (void)ref::analyticField(s.data);
     } catch (const std::invalid_argument& e) {
@@ -93,22 +108,25 @@ ref::Volume<std::uint16_t> isoSceneVolume(const IsoScene& scene) {
   if (scene.data == "single_voxel") {  // one voxel of 200 in zeros, off every symmetry plane
     const int x = scene.dims[0] / 2 + 1, y = scene.dims[1] / 2 - 2, z = scene.dims[2] / 2 + 3;
     if (x >= scene.dims[0] || y < 0 || z >= scene.dims[2])
-      throw std::invalid_argument("single_voxel: the voxel (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
-                                  ") is outside the " + std::to_string(scene.dims[0]) + "x" + std::to_string(scene.dims[1]) + "x" +
-                                  std::to_string(scene.dims[2]) + " volume (it needs at least 3x4x7)");
+      throw std::invalid_argument("single_voxel: the voxel (" + std::to_string(x) + ", " + std::to_string(y) + ", " +
+                                  std::to_string(z) + ") is outside the " + std::to_string(scene.dims[0]) + "x" +
+                                  std::to_string(scene.dims[1]) + "x" + std::to_string(scene.dims[2]) +
+                                  " volume (it needs at least 3x4x7)");
     ref::Volume<std::uint16_t> v(scene.dims, 0);
     v.at(x, y, z) = 200;
     return v;
   }
-  if (scene.data == "empty") return ref::Volume<std::uint16_t>(scene.dims, 0);      // all zero
+  if (scene.data == "empty") return ref::Volume<std::uint16_t>(scene.dims, 0);     // all zero
   if (scene.data == "full") return ref::Volume<std::uint16_t>(scene.dims, 65535);  // all at the 16-bit maximum
   if (scene.data == "plateau") {  // a box of exactly the isovalue in zeros: a flat region at it
     if (!(scene.isovalue >= 0.0 && scene.isovalue <= 65535.0))
-      throw std::invalid_argument("plateau: the isovalue " + std::to_string(scene.isovalue) + " is not a 16-bit sample value (0..65535)");
+      throw std::invalid_argument("plateau: the isovalue " + std::to_string(scene.isovalue) +
+                                  " is not a 16-bit sample value (0..65535)");
     ref::Volume<std::uint16_t> v(scene.dims, 0);
     for (int z = scene.dims[2] / 4; z < 3 * scene.dims[2] / 4; ++z)
       for (int y = scene.dims[1] / 3; y < 2 * scene.dims[1] / 3; ++y)
-        for (int x = scene.dims[0] / 4; x < scene.dims[0] / 2; ++x) v.at(x, y, z) = static_cast<std::uint16_t>(scene.isovalue);
+        for (int x = scene.dims[0] / 4; x < scene.dims[0] / 2; ++x)
+          v.at(x, y, z) = static_cast<std::uint16_t>(scene.isovalue);
     return v;
   }
   return ref::widenToU16(ref::sampleFieldU8(ref::analyticField(scene.data), scene.dims));

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
 #include "conformance/framework/json_reader.h"
 #include "reference/common/view_camera.h"
 #include "reference/common/volume.h"
-#include <nlohmann/json.hpp>
 
 #include "reference/iso/view_refinement.h"
 #include "reference/leb/leb_grid.h"
@@ -20,14 +20,14 @@ namespace voxref::conf {
 
 struct IsoScene {
   std::string name;
-  std::filesystem::path volumeFile;  // a raw volume of the user's (.raw or .raw.gz), instead of data
-  bool volumeIsUint16 = false;       // little endian
+  std::filesystem::path volumeFile;         // a raw volume of the user's (.raw or .raw.gz), instead of data
+  bool volumeIsUint16 = false;              // little endian
   std::string data = "gaussian_buckyball";  // an analytic field (reference/common/fields.h) sampled as uint8,
                                             // or "single_voxel" / "plateau" / "empty" / "full" (hard cases)
   ref::Dims3 dims{65, 65, 65};
   double isovalue = 85.0;
-  ref::OrbitPath path;       // centre, radius, elevation, azimuths, frames
-  ref::ViewCamera camera;    // size, field of view, near and far (eye and target from the path)
+  ref::OrbitPath path;     // centre, radius, elevation, azimuths, frames
+  ref::ViewCamera camera;  // size, field of view, near and far (eye and target from the path)
   ref::RefinementBudget budget;
   bool occlusionCulling = true;
   int retestVisibleEvery = 3;  // frames between occlusion tests of a diamond found visible
@@ -50,7 +50,8 @@ void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 // out of range (dims 1..kMaxIsoSceneExtent, the largest LEB grid; orbit frames
 // 1..kMaxIsoSceneFrames; camera width and height 1..kMaxIsoSceneImageSide; refinement budgets
 // >= 0), a data name that is no field, or an orbit camera that is degenerate at some frame.
-inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxLebK) + 1, kMaxIsoSceneFrames = 10000, kMaxIsoSceneImageSide = 4096;
+inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxLebK) + 1, kMaxIsoSceneFrames = 10000,
+                     kMaxIsoSceneImageSide = 4096;
 nlohmann::json toJson(const IsoScene& scene);
 IsoScene isoSceneFromJson(const nlohmann::json& j);
 

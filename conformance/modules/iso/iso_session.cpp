@@ -19,13 +19,14 @@
 namespace voxref::conf {
 namespace {
 
-
 gpu::QueryBox queryBox(const ref::LebGrid& g, const ref::GridPoint& d, const ref::Dims3& dims) {
   const ref::GridBox b = ref::diamondBox(g, d);
   gpu::QueryBox q;
   for (int a = 0; a < 3; ++a) {
-    q.lo[static_cast<std::size_t>(a)] = std::min<double>(b.lo[a], dims[static_cast<std::size_t>(a)] - 1) - kQueryBoxMargin;
-    q.hi[static_cast<std::size_t>(a)] = std::min<double>(b.hi[a], dims[static_cast<std::size_t>(a)] - 1) + kQueryBoxMargin;
+    q.lo[static_cast<std::size_t>(a)] =
+        std::min<double>(b.lo[a], dims[static_cast<std::size_t>(a)] - 1) - kQueryBoxMargin;
+    q.hi[static_cast<std::size_t>(a)] =
+        std::min<double>(b.hi[a], dims[static_cast<std::size_t>(a)] - 1) + kQueryBoxMargin;
   }
   return q;
 }

@@ -35,9 +35,9 @@ struct IsoFrame {
   ref::ViewCamera camera;
   ref::RefinementStats refinement;
   std::size_t occlusionTests = 0, culled = 0;
-  std::size_t revokedCulls = 0;          // culls undone by the verification pass (IsoScene::verifyCulls)
-  std::size_t falseCulls = 0;            // culled, yet visible in the ground truth
-  std::size_t invisibleCandidates = 0;   // queue diamonds holding the isovalue, not visible in the ground truth
+  std::size_t revokedCulls = 0;         // culls undone by the verification pass (IsoScene::verifyCulls)
+  std::size_t falseCulls = 0;           // culled, yet visible in the ground truth
+  std::size_t invisibleCandidates = 0;  // queue diamonds holding the isovalue, not visible in the ground truth
   std::size_t culledInvisible = 0;
   std::size_t visibleDiamonds = 0, triangles = 0, leafTetrahedra = 0;
   std::uint64_t pagesDecoded = 0;  // cumulative

@@ -67,8 +67,10 @@ double eyeDepthOfWindowDepth(const ref::ViewCamera& c, double wd) {
   return 2.0 * f * n / ((f + n) - ndc * (f - n));
 }
 
-MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoImageGl& gl, const fx::RayImage& truth, const ref::ViewCamera& camera) {
-  if (gl.width != truth.width || gl.height != truth.height) throw std::invalid_argument("mesh images of different sizes");
+MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoImageGl& gl, const fx::RayImage& truth,
+                                     const ref::ViewCamera& camera) {
+  if (gl.width != truth.width || gl.height != truth.height)
+    throw std::invalid_argument("mesh images of different sizes");
   const glm::dmat4 mvp = ref::projectionMatrix(camera) * ref::viewMatrix(camera);
   std::vector<ScreenTriangle> tris(mesh.triangleCount());
   for (std::size_t t = 0; t < tris.size(); ++t) {
@@ -99,18 +101,25 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
   };
   for (int y = 0; y < gl.height; ++y)
     for (int x = 0; x < gl.width; ++x) {
-      const std::size_t i = static_cast<std::size_t>(x) + static_cast<std::size_t>(gl.width) * static_cast<std::size_t>(y);
+      const std::size_t i =
+          static_cast<std::size_t>(x) + static_cast<std::size_t>(gl.width) * static_cast<std::size_t>(y);
       ++a.pixels;
       const glm::dvec2 c(x + 0.5, y + 0.5);
       const bool hasG = gl.primitive[i] != 0, hasE = truth.primitive[i] != fx::kNoHit;
       const std::size_t g = hasG ? gl.primitive[i] - 1 : 0, e = hasE ? truth.primitive[i] : 0;
-      judged[i] = {x, y, MeshPixelFailure::None, hasG ? eyeDepthOfWindowDepth(camera, gl.windowDepth[i]) : std::nan(""),
-                   static_cast<double>(truth.depth[i]), std::nan(""), std::nan("")};
+      judged[i] = {x,
+                   y,
+                   MeshPixelFailure::None,
+                   hasG ? eyeDepthOfWindowDepth(camera, gl.windowDepth[i]) : std::nan(""),
+                   static_cast<double>(truth.depth[i]),
+                   std::nan(""),
+                   std::nan("")};
       if ((hasG && g >= tris.size()) || (hasE && e >= tris.size())) {
         fail(i, MeshPixelFailure::Coverage, a.coverageFailures);  // an id that is not a triangle of the mesh
         continue;
       }
-      if ((hasG && !tris[g].projectable) || (hasE && !tris[e].projectable)) continue;  // crosses the eye plane: not judged
+      if ((hasG && !tris[g].projectable) || (hasE && !tris[e].projectable))
+        continue;  // crosses the eye plane: not judged
       const double coverE = hasE ? coverage(tris[e], c) : -kInf;
       double allowance = 0.0, zG = kInf;
       if (hasG) {
@@ -123,9 +132,10 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
         const double wd = gl.windowDepth[i];
         const double ulp = static_cast<double>(std::nextafter(static_cast<float>(wd), 2.0f)) - static_cast<float>(wd);
         const double zGl = judged[i].glDepth;
-        const double slope = std::hypot(planeDepth(tris[g], camera, c + glm::dvec2(1, 0)) - zG, planeDepth(tris[g], camera, c + glm::dvec2(0, 1)) - zG);
-        allowance = 8.0 * std::fabs(eyeDepthOfWindowDepth(camera, wd + ulp) - zGl) + kSnapPixels * (std::isfinite(slope) ? slope : kInf) +
-                    0x1p-20 * std::fabs(zG);
+        const double slope = std::hypot(planeDepth(tris[g], camera, c + glm::dvec2(1, 0)) - zG,
+                                        planeDepth(tris[g], camera, c + glm::dvec2(0, 1)) - zG);
+        allowance = 8.0 * std::fabs(eyeDepthOfWindowDepth(camera, wd + ulp) - zGl) +
+                    kSnapPixels * (std::isfinite(slope) ? slope : kInf) + 0x1p-20 * std::fabs(zG);
         judged[i].planeDepth = zG;
         judged[i].allowance = allowance;
         const double diff = std::fabs(zGl - zG);
@@ -152,7 +162,9 @@ MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoIma
         ++a.otherTriangleAllowed;
         continue;
       }
-      if (hasE && coverE > kSnapPixels) fail(i, MeshPixelFailure::Coverage, a.coverageFailures);  // GL left empty a pixel Embree's triangle surely covers
+      if (hasE && coverE > kSnapPixels)
+        fail(i, MeshPixelFailure::Coverage,
+             a.coverageFailures);  // GL left empty a pixel Embree's triangle surely covers
     }
   for (std::size_t i : largestScores(failScore, kMaxWorstPixels)) a.worst.push_back(judged[i]);
   for (std::size_t i : largestScores(passScore, kMaxWorstPixels))

@@ -61,6 +61,7 @@ struct MeshImageAgreement {
 // Eye depth of a GL window depth (the inverse of ref::windowDepth).
 double eyeDepthOfWindowDepth(const ref::ViewCamera& camera, double windowDepth);
 
-MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoImageGl& gl, const fx::RayImage& truth, const ref::ViewCamera& camera);
+MeshImageAgreement compareMeshImages(const ref::IsoMesh& mesh, const gpu::IsoImageGl& gl, const fx::RayImage& truth,
+                                     const ref::ViewCamera& camera);
 
 }  // namespace voxref::conf

@@ -9,8 +9,8 @@
 
 namespace voxref::conf {
 
-ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field, const ref::ViewCamera& camera, double isovalue,
-                                    double thresholdPx) {
+ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field,
+                                    const ref::ViewCamera& camera, double isovalue, double thresholdPx) {
   ref::ViewRefinement refinement(bounds, isovalue);
   ref::RefinementBudget budget;
   budget.threshold = thresholdPx;

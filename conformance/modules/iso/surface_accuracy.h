@@ -26,8 +26,8 @@ struct ThresholdSurface {
 // isovalue projects an error under `thresholdPx` pixels (no split budget beyond the refinement's
 // default), then extracts the isosurface of its leaves from `field`. Throws what the reference
 // layers throw.
-ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field, const ref::ViewCamera& camera, double isovalue,
-                                    double thresholdPx);
+ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field,
+                                    const ref::ViewCamera& camera, double isovalue, double thresholdPx);
 
 // A ray-cast image of an extracted surface against the exact one, same camera and size:
 // silhouette pixels (hit in one image, miss in the other), and over pixels hit in both the mean
@@ -36,7 +36,9 @@ ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridF
 struct SurfaceError {
   std::size_t pixels = 0, silhouettePixels = 0, bothHit = 0;
   double meanDepth = 0.0, maxDepth = 0.0;
-  double silhouetteShare() const { return pixels ? static_cast<double>(silhouettePixels) / static_cast<double>(pixels) : 0.0; }
+  double silhouetteShare() const {
+    return pixels ? static_cast<double>(silhouettePixels) / static_cast<double>(pixels) : 0.0;
+  }
 };
 SurfaceError compareSurfaces(const fx::RayImage& extracted, const fx::RayImage& exact);
 

@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "conformance/framework/compare.h"
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/case_images.h"
 #include "conformance/framework/report/worst_samples.h"
+#include "conformance/io/atomic_file.h"
 #include "conformance/modules/sparsegrid/prepared_scene.h"
 #include "emulation/combination_envelope.h"
 #include "gpu/combination_gl.h"
@@ -18,7 +18,6 @@
 
 namespace voxref::conf {
 namespace {
-
 
 const ref::CodePlanes& envelopeJudged(const CombinationPlanes& r) { return r.gl ? *r.gl : r.emulated->planes; }
 
@@ -34,7 +33,8 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
   ref::parallelFor(r.frame.planes, threads, [&](int k) {
     for (int j = 0; j < h; ++j)
       for (int i = 0; i < w; ++i) {
-        const std::size_t idx = static_cast<std::size_t>(i) + static_cast<std::size_t>(w) * (j + static_cast<std::size_t>(h) * k);
+        const std::size_t idx =
+            static_cast<std::size_t>(i) + static_cast<std::size_t>(w) * (j + static_cast<std::size_t>(h) * k);
         const double v = ref::decodeFramebufferCode(judged.format, judged.codes[idx]);
         const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
         widest[static_cast<std::size_t>(k)] = std::max(widest[static_cast<std::size_t>(k)], pass.hi - pass.lo);
@@ -48,7 +48,8 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
     if (r.envelope[idx] == 1) ++r.envelopeWarn;
     if (r.envelope[idx] != 2) continue;
     if (r.envelopeFail++ >= 20) continue;
-    const int i = static_cast<int>(idx % w), j = static_cast<int>((idx / w) % h), k = static_cast<int>(idx / (static_cast<std::size_t>(w) * h));
+    const int i = static_cast<int>(idx % w), j = static_cast<int>((idx / w) % h),
+              k = static_cast<int>(idx / (static_cast<std::size_t>(w) * h));
     const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
     r.envelopeFailures.push_back({{"sample", {i, j, k}},
                                   {"value", ref::decodeFramebufferCode(judged.format, judged.codes[idx])},
@@ -58,14 +59,16 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
 }
 
 // CombinationPlanes::worst; `excess` from judgeEnvelope (empty when no envelope ran).
-void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* envelope, const std::vector<double>& excess) {
+void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* envelope,
+                      const std::vector<double>& excess) {
   const std::size_t n = r.reference.values.size();
   std::vector<std::vector<std::size_t>> wrong;
   if (r.gl && r.emulated) {
     const CodeComparison c = compareCodes(*r.gl, r.emulated->planes, &r.emulated->unmodelled);
     std::vector<double> distance(n, 0.0);
     for (std::size_t s = 0; s < c.mask.size(); ++s)
-      if (c.mask[s]) distance[s] = static_cast<double>(codeDistance(r.gl->format, r.gl->codes[s], r.emulated->planes.codes[s]));
+      if (c.mask[s])
+        distance[s] = static_cast<double>(codeDistance(r.gl->format, r.gl->codes[s], r.emulated->planes.codes[s]));
     wrong.push_back(largestScores(distance, kMaxWorstPixels));
   }
   std::vector<double> failing(n, 0.0), warned(n, 0.0);
@@ -74,7 +77,8 @@ void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* enve
   std::vector<std::size_t> chosen = interleaveRanked(wrong, kMaxWorstPixels);
   if (chosen.size() < kMaxWorstPixels)
     for (std::size_t s : largestScores(warned, kMaxWorstPixels))
-      if (chosen.size() < kMaxWorstPixels && std::find(chosen.begin(), chosen.end(), s) == chosen.end()) chosen.push_back(s);
+      if (chosen.size() < kMaxWorstPixels && std::find(chosen.begin(), chosen.end(), s) == chosen.end())
+        chosen.push_back(s);
 
   const ref::CodePlanes* gl = r.gl ? &*r.gl : nullptr;
   const ref::CodePlanes* emulated = r.emulated ? &r.emulated->planes : nullptr;
@@ -109,12 +113,13 @@ void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* enve
 // Runs the semantics of every departure of the profile and records, per departure, the samples
 // where the driver's output differs from those semantics; envelope failures and warnings are
 // attributed to the departures that change their sample.
-void findDepartures(CombinationPlanes& r, const ref::CombinationTextures& textures, const emu::PrecisionProfile& profile,
-                    int threads) {
+void findDepartures(CombinationPlanes& r, const ref::CombinationTextures& textures,
+                    const emu::PrecisionProfile& profile, int threads) {
   std::vector<std::uint8_t> explained(r.envelope.size(), 0);
   for (const emu::Departure& d : emu::departuresAmong(profile, r.simulated)) {
-    const emu::EmulatedPlanes semantics = emu::emulateCombination(
-        textures, r.frame, r.scene.sampler, r.scene.framebuffer, d.semantics, {d.flushEachPass || r.scene.flushEachPass, threads});
+    const emu::EmulatedPlanes semantics =
+        emu::emulateCombination(textures, r.frame, r.scene.sampler, r.scene.framebuffer, d.semantics,
+                                {d.flushEachPass || r.scene.flushEachPass, threads});
     const CodeComparison c = compareCodes(*r.gl, semantics.planes, &semantics.unmodelled);
     std::size_t fails = 0, warns = 0;
     for (std::size_t s = 0; s < c.mask.size() && s < r.envelope.size(); ++s) {
@@ -123,7 +128,8 @@ void findDepartures(CombinationPlanes& r, const ref::CombinationTextures& textur
       fails += r.envelope[s] == 2;
       warns += r.envelope[s] == 1;
     }
-    r.departures.push_back({std::string(d.id), std::string(d.description),
+    r.departures.push_back({std::string(d.id),
+                            std::string(d.description),
                             {{"samples_changed", c.mismatched},
                              {"samples_compared", c.compared},
                              {"max_abs_diff_lsb", c.maxDistance},
@@ -163,7 +169,8 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
   } else {
     try {
       const emu::CombinationEmuOptions options{scene.flushEachPass, threads};
-      r->simulated = emu::combinationEffects(textures, scene.sampler, scene.framebuffer, *profile, options, r->frame.width, r->frame.height);
+      r->simulated = emu::combinationEffects(textures, scene.sampler, scene.framebuffer, *profile, options,
+                                             r->frame.width, r->frame.height);
       for (emu::Effect e : r->simulated) r->effects.emplace_back(emu::effectId(e));
       t0 = Clock::now();
       r->emulated = emu::emulateCombination(textures, r->frame, scene.sampler, scene.framebuffer, *profile, options);
@@ -181,7 +188,7 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
     try {
       t0 = Clock::now();
       r->gl = gpu::renderCombinationGl(*ctx.gl(), textures, r->frame, scene.sampler, scene.framebuffer,
-                                        {scene.flushEachPass, ctx.shaderOverride()});
+                                       {scene.flushEachPass, ctx.shaderOverride()});
       r->secondsGl = secondsSince(t0);
     } catch (const gpu::GlUnsupported& e) {
       r->glNotRun = e.what();
@@ -211,12 +218,9 @@ OracleResult exactOracle(const CombinationPlanes& r, const ref::Image* glImage, 
   const CodeComparison c = compareCodes(*r.gl, r.emulated->planes, &r.emulated->unmodelled);
   const ImageComparison img = compareImages(*glImage, *emuImage);
   const bool unorm = ref::unormBits(r.gl->format) != 0;
-  o.figures = {{"compared_samples", c.compared},
-               {"excluded_samples", c.excluded},
-               {"mismatched_samples", c.mismatched},
-               {"max_abs_diff_lsb", c.maxDistance},
-               {"diff_unit", unorm ? "lsb" : "ulp"},
-               {"mismatched_pixels", img.mismatchedPixels}};
+  o.figures = {{"compared_samples", c.compared},     {"excluded_samples", c.excluded},
+               {"mismatched_samples", c.mismatched}, {"max_abs_diff_lsb", c.maxDistance},
+               {"diff_unit", unorm ? "lsb" : "ulp"}, {"mismatched_pixels", img.mismatchedPixels}};
   const int w = r.frame.width, h = r.frame.height;
   if (c.mismatched) {
     const std::size_t idx = c.firstMismatch;
@@ -254,10 +258,11 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
                {"quality_warning", r.envelopeWarn},
                {"fail", r.envelopeFail},
                {"colour_threshold", r.envelopeThreshold},
-               {"precision", {{"coord_bits", emu::kEnvelopePass.coordBits},
-                              {"uvw_bits_pass", emu::kEnvelopePass.uvwBits},
-                              {"uvw_bits_warning", emu::kEnvelopeQualityWarning.uvwBits},
-                              {"division_ulps", emu::kEnvelopePass.divisionUlps}}},
+               {"precision",
+                {{"coord_bits", emu::kEnvelopePass.coordBits},
+                 {"uvw_bits_pass", emu::kEnvelopePass.uvwBits},
+                 {"uvw_bits_warning", emu::kEnvelopeQualityWarning.uvwBits},
+                 {"division_ulps", emu::kEnvelopePass.divisionUlps}}},
                {"failures", r.envelopeFailures}};
   // How much the envelope can tell: its widest interval against the spread of the true values.
   // Many passes into a low-precision target may allow more than the signal itself (issue 6 note).
@@ -280,10 +285,12 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
   if (r.envelopeFail) {
     o.verdict = Verdict::Fail;
     const auto& first = r.envelopeFailures.front();
-    o.summary = std::to_string(r.envelopeFail) + " of " + std::to_string(n) + " " + who + " samples outside the envelope; first " +
-                first["sample"].dump() + " = " + first["value"].dump() + " not in " + first["allowed"].dump();
+    o.summary = std::to_string(r.envelopeFail) + " of " + std::to_string(n) + " " + who +
+                " samples outside the envelope; first " + first["sample"].dump() + " = " + first["value"].dump() +
+                " not in " + first["allowed"].dump();
     if (!r.departures.empty())
-      o.summary += "; " + std::to_string(r.envelopeFail - r.unexplainedFail) + " at samples a named departure of the driver changes";
+      o.summary += "; " + std::to_string(r.envelopeFail - r.unexplainedFail) +
+                   " at samples a named departure of the driver changes";
   } else if (r.envelopeWarn) {
     o.verdict = Verdict::Warn;
     o.summary = std::to_string(r.envelopeWarn) + " of " + std::to_string(n) + " " + who +
@@ -294,10 +301,11 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
   }
   if (r.envelopeWidest >= spread) {
     char note[200];
-    std::snprintf(note, sizeof note,
-                  "; blind here: its widest interval (%.4g) spans the reference's whole spread (%.4g), so only the exact oracle "
-                  "can tell this scene's output from a constant",
-                  r.envelopeWidest, spread);
+    std::snprintf(
+        note, sizeof note,
+        "; blind here: its widest interval (%.4g) spans the reference's whole spread (%.4g), so only the exact oracle "
+        "can tell this scene's output from a constant",
+        r.envelopeWidest, spread);
     o.summary += note;
   }
   return o;
@@ -323,8 +331,8 @@ OracleResult idealOracle(const CombinationPlanes& r, const ref::SampleStack& jud
     o.figures["max_abs_diff_lsb"] = planes.maxAbs / lsb;
   }
   char buf[160];
-  std::snprintf(buf, sizeof buf, "%s planes vs double reference: max %.3g, RMSE %.3g, PSNR %.1f dB", who.c_str(), planes.maxAbs,
-                planes.rmse, planes.psnrDb);
+  std::snprintf(buf, sizeof buf, "%s planes vs double reference: max %.3g, RMSE %.3g, PSNR %.1f dB", who.c_str(),
+                planes.maxAbs, planes.rmse, planes.psnrDb);
   o.summary = buf;
   return o;
 }
@@ -342,7 +350,10 @@ void writeImages(CaseContext& ctx, CaseResult& result, const ref::Image* glImage
   if (emuImage) write(*emuImage, "emulated", result.images.emulated);
   write(refImage, "reference", result.images.reference);
   result.images.errorMask = caseImageName(result.id, "error_mask");
-  io::writePng(ctx.outDir() / result.images.errorMask, errorMaskPreview(glImage ? *glImage : emuImage ? *emuImage : refImage, scale, flags));
+  io::writePng(ctx.outDir() / result.images.errorMask, errorMaskPreview(glImage    ? *glImage
+                                                                        : emuImage ? *emuImage
+                                                                                   : refImage,
+                                                                        scale, flags));
 }
 
 }  // namespace

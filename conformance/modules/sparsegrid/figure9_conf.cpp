@@ -17,7 +17,7 @@ SparseGridScene figure9Scene(ref::ScalingPolicy scaling) {
   s.data.field = "figure9";
   s.grid = {2, true};
   s.textures = {ref::TexelFormat::R16, ref::TextureSizing::Padded, scaling};  // padded: exact addresses
-  s.framebuffer = ref::FramebufferFormat::RGBA16;                              // fixed point: it clamps
+  s.framebuffer = ref::FramebufferFormat::RGBA16;                             // fixed point: it clamps
   s.shading.mode = ref::RenderMode::Mip;
   const double h = 1.0 / 8;
   s.camera.origin = glm::dvec3(-h / 2);
@@ -87,17 +87,28 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
     perOrder.push_back({{"order", order}, {"max_abs_error", err}});
   } while (std::next_permutation(perm.begin(), perm.end()));
 
-  OracleResult exact{"exact", exactMismatches ? Verdict::Fail : Verdict::Pass,
-                     std::to_string(exactMismatches) + " samples differ between GL and emulation over all " + std::to_string(orders) + " orders",
-                     {{"mismatched_samples", exactMismatches}, {"mismatched_pixels", mismatchedPixels}, {"max_abs_diff_lsb", maxDistance}, {"orders", orders}}};
+  OracleResult exact{"exact",
+                     exactMismatches ? Verdict::Fail : Verdict::Pass,
+                     std::to_string(exactMismatches) + " samples differ between GL and emulation over all " +
+                         std::to_string(orders) + " orders",
+                     {{"mismatched_samples", exactMismatches},
+                      {"mismatched_pixels", mismatchedPixels},
+                      {"max_abs_diff_lsb", maxDistance},
+                      {"orders", orders}}};
   if (!ctx.profile()) exact = {"exact", Verdict::NotRun, "no precision profile for this driver", {}};
   // The derivation predicts an error of at least 0.6 for every order; anything above the
   // quantization bound already shows the clamping failure.
-  OracleResult paper{"ideal", correctOrders == 0 ? Verdict::Pass : Verdict::Fail,
+  OracleResult paper{"ideal",
+                     correctOrders == 0 ? Verdict::Pass : Verdict::Fail,
                      std::to_string(orders - correctOrders) + " of " + std::to_string(orders) +
-                         " orders wrong beyond the quantization bound; the least wrong is off by " + std::to_string(smallestFailure),
-                     {{"orders", orders}, {"orders_correct", correctOrders}, {"smallest_max_abs_error", smallestFailure},
-                      {"quantization_bound", bound}, {"expected_smallest_error", 0.6}, {"per_order", perOrder}}};
+                         " orders wrong beyond the quantization bound; the least wrong is off by " +
+                         std::to_string(smallestFailure),
+                     {{"orders", orders},
+                      {"orders_correct", correctOrders},
+                      {"smallest_max_abs_error", smallestFailure},
+                      {"quantization_bound", bound},
+                      {"expected_smallest_error", 0.6},
+                      {"per_order", perOrder}}};
   result.oracles = {exact, paper};
   result.figures = {{"orders", orders}, {"scene", toJson(scene)}};
   concludeFromOracles(result);
@@ -106,13 +117,16 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
 
 CaseResult scaledIsCorrect(CaseContext& ctx) {
   const SparseGridScene scene = figure9Scene(ref::ScalingPolicy::Scaled);
-  CaseResult result = judgeCombination(ctx, "sparsegrid.hard.fig9.scaled", "Fig. 9 data with the paper's 1/n+ scaling: every sample right", scene);
+  CaseResult result = judgeCombination(ctx, "sparsegrid.hard.fig9.scaled",
+                                       "Fig. 9 data with the paper's 1/n+ scaling: every sample right", scene);
   const auto r = ctx.cached<CombinationPlanes>(planeKey(scene), [&] { return computeCombinationPlanes(ctx, scene); });
   if (!r->gl) return result;
   const double err = maxError(*r), bound = quantizationBound(r->passCount, r->readbackScale);
-  result.oracles.push_back({"bound", err <= bound ? Verdict::Pass : Verdict::Fail,
-                            "max error " + std::to_string(err) + " against the quantization bound " + std::to_string(bound),
-                            {{"max_abs_error", err}, {"quantization_bound", bound}}});
+  result.oracles.push_back(
+      {"bound",
+       err <= bound ? Verdict::Pass : Verdict::Fail,
+       "max error " + std::to_string(err) + " against the quantization bound " + std::to_string(bound),
+       {{"max_abs_error", err}, {"quantization_bound", bound}}});
   concludeFromOracles(result);
   return result;
 }

@@ -38,7 +38,8 @@ PreparedScene prepareScene(const SparseGridScene& scene) {
 
 ref::SampleStack referencePlanes(const PreparedScene& prepared, int threads, const std::function<void(int)>& progress) {
   const ref::Combination& c = *prepared.combination;
-  return ref::sampleFrame(prepared.frame, [&c](glm::dvec3 p) { return c.value(p); }, threads, progress);
+  return ref::sampleFrame(
+      prepared.frame, [&c](glm::dvec3 p) { return c.value(p); }, threads, progress);
 }
 
 }  // namespace voxref::conf

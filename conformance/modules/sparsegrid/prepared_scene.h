@@ -27,6 +27,7 @@ PreparedScene prepareScene(const SparseGridScene& scene);
 
 // The double reference at every sample: the combination technique (eq. 11) in double, 0 outside
 // the unit cube. `progress` gets the number of planes done.
-ref::SampleStack referencePlanes(const PreparedScene& prepared, int threads, const std::function<void(int)>& progress = {});
+ref::SampleStack referencePlanes(const PreparedScene& prepared, int threads,
+                                 const std::function<void(int)>& progress = {});
 
 }  // namespace voxref::conf

@@ -36,16 +36,18 @@ void addMainCases(std::vector<Case>& cases) {
         s.grid.level = level;
         s.framebuffer = fb;
         s.shading.mode = mode;
-        const std::string id = "sparsegrid.combination." + str(ref::name(fb)) + ".l" + std::to_string(level) + "." + str(ref::name(mode));
-        std::string what = "combination technique, level " + std::to_string(level) + ", " + str(ref::name(mode)) + ", " +
-                           str(ref::name(fb)) + " framebuffer, r16 padded textures";
+        const std::string id =
+            "sparsegrid.combination." + str(ref::name(fb)) + ".l" + std::to_string(level) + "." + str(ref::name(mode));
+        std::string what = "combination technique, level " + std::to_string(level) + ", " + str(ref::name(mode)) +
+                           ", " + str(ref::name(fb)) + " framebuffer, r16 padded textures";
         if (!ref::existsInGl(fb)) what += " (emulated only: GL has no 12-bit colour buffer)";
         cases.push_back(combinationCase(id, what, s));
       }
 }
 
 void addTextureCases(std::vector<Case>& cases) {
-  const TexelFormat formats[] = {TexelFormat::R8, TexelFormat::RGBA8, TexelFormat::R16, TexelFormat::R16F, TexelFormat::R32F};
+  const TexelFormat formats[] = {TexelFormat::R8, TexelFormat::RGBA8, TexelFormat::R16, TexelFormat::R16F,
+                                 TexelFormat::R32F};
   for (TexelFormat tf : formats)
     for (ref::TextureSizing sizing : {ref::TextureSizing::Padded, ref::TextureSizing::Exact})
       for (ref::Filter filter : {ref::Filter::Linear, ref::Filter::Nearest})
@@ -60,8 +62,9 @@ void addTextureCases(std::vector<Case>& cases) {
           const std::string id = "sparsegrid.texture." + str(ref::name(tf)) + "." + str(ref::name(sizing)) + "." +
                                  str(ref::name(filter)) + "." + str(ref::name(wrap));
           cases.push_back(combinationCase(id,
-                                          "texture sampling: " + str(ref::name(tf)) + " " + str(ref::name(sizing)) + " textures, " +
-                                              str(ref::name(filter)) + ", " + str(ref::name(wrap)) + ", level 5, rgba32f",
+                                          "texture sampling: " + str(ref::name(tf)) + " " + str(ref::name(sizing)) +
+                                              " textures, " + str(ref::name(filter)) + ", " + str(ref::name(wrap)) +
+                                              ", level 5, rgba32f",
                                           s));
         }
 }
@@ -76,10 +79,11 @@ void addBrickCases(std::vector<Case>& cases) {
       s.textures.maxExtent = 16;
       s.framebuffer = fb;
       s.shading.mode = RenderMode::Mip;
-      cases.push_back(combinationCase("sparsegrid.texture.bricks16." + str(ref::name(sizing)) + "." + str(ref::name(fb)),
-                                      "grid textures split into 16-texel bricks (" + str(ref::name(sizing)) + ", " +
-                                          str(ref::name(fb)) + "): per-brick addresses and discards, level 6",
-                                      s));
+      cases.push_back(
+          combinationCase("sparsegrid.texture.bricks16." + str(ref::name(sizing)) + "." + str(ref::name(fb)),
+                          "grid textures split into 16-texel bricks (" + str(ref::name(sizing)) + ", " +
+                              str(ref::name(fb)) + "): per-brick addresses and discards, level 6",
+                          s));
     }
 }
 
@@ -89,10 +93,11 @@ void addFramebufferCases(std::vector<Case>& cases) {
     s.grid.level = 5;
     s.framebuffer = fb;
     s.flushEachPass = true;
-    cases.push_back(combinationCase("sparsegrid.framebuffer.flush_each_pass." + str(ref::name(fb)) + ".l5",
-                                    "glFinish after every pass (" + str(ref::name(fb)) +
-                                        "): the per-pass quantization of the GL semantics, also on drivers that cache tiles",
-                                    s));
+    cases.push_back(
+        combinationCase("sparsegrid.framebuffer.flush_each_pass." + str(ref::name(fb)) + ".l5",
+                        "glFinish after every pass (" + str(ref::name(fb)) +
+                            "): the per-pass quantization of the GL semantics, also on drivers that cache tiles",
+                        s));
   }
 }
 
@@ -103,10 +108,12 @@ void addDataCases(std::vector<Case>& cases) {
   s.framebuffer = FramebufferFormat::RGBA16;
   s.shading.mode = RenderMode::Mip;
   cases.push_back(combinationCase("sparsegrid.data.hydrogen_orbital.l7.mip",
-                                  "MIP of an analytic hydrogen 3d orbital (the paper's data set IV is one), level 7", s));
+                                  "MIP of an analytic hydrogen 3d orbital (the paper's data set IV is one), level 7",
+                                  s));
   s.shading.mode = RenderMode::Iso;
   s.shading.isovalue = 0.3;
-  cases.push_back(combinationCase("sparsegrid.data.hydrogen_orbital.l7.iso", "isosurface 0.3 of the hydrogen 3d orbital, level 7", s));
+  cases.push_back(combinationCase("sparsegrid.data.hydrogen_orbital.l7.iso",
+                                  "isosurface 0.3 of the hydrogen 3d orbital, level 7", s));
 }
 
 void addHardCases(std::vector<Case>& cases) {
@@ -117,7 +124,8 @@ void addHardCases(std::vector<Case>& cases) {
     s.textures.format = TexelFormat::R32F;
     s.framebuffer = FramebufferFormat::RGBA32F;
     latticeCamera(s, glm::dvec3(0.0), 1.0 / 16, 17, 17, 17);
-    cases.push_back(combinationCase("sparsegrid.hard.nodes.l4", "query points exactly on the nodes of the level-4 full grid", s));
+    cases.push_back(
+        combinationCase("sparsegrid.hard.nodes.l4", "query points exactly on the nodes of the level-4 full grid", s));
   }
   {  // on the x faces of the finest cells, y and z at cell centres
     SparseGridScene s = defaultSparseGridScene();
@@ -125,7 +133,8 @@ void addHardCases(std::vector<Case>& cases) {
     s.textures.format = TexelFormat::R32F;
     s.framebuffer = FramebufferFormat::RGBA32F;
     latticeCamera(s, glm::dvec3(0.0, 1.0 / 32, 1.0 / 32), 1.0 / 16, 17, 16, 16);
-    cases.push_back(combinationCase("sparsegrid.hard.cell_faces.l4", "query points on cell faces (x on nodes, y and z mid-cell)", s));
+    cases.push_back(combinationCase("sparsegrid.hard.cell_faces.l4",
+                                    "query points on cell faces (x on nodes, y and z mid-cell)", s));
   }
   // x 2^-24 (one float32 ulp above 0.5) either side of the nodes of the level-4 grid, where LINEAR
   // changes cells, and of the mid-cells, where NEAREST changes texels; y on nodes, z mid-cell.
@@ -136,7 +145,8 @@ void addHardCases(std::vector<Case>& cases) {
       s.textures.format = TexelFormat::R32F;
       s.framebuffer = FramebufferFormat::RGBA32F;
       s.sampler.filter = filter;
-      const ref::PlaneFrame f = ref::straddlingFrame(mid ? 1.0 / 32 : 0.0, 1.0 / 16, 16, {0, 1.0 / 16, 0}, 17, {0, 0, 17.0 / 32});
+      const ref::PlaneFrame f =
+          ref::straddlingFrame(mid ? 1.0 / 32 : 0.0, 1.0 / 16, 16, {0, 1.0 / 16, 0}, 17, {0, 0, 17.0 / 32});
       s.camera.origin = f.origin;
       s.camera.dx = f.dx;
       s.camera.dy = f.dy;
@@ -146,8 +156,8 @@ void addHardCases(std::vector<Case>& cases) {
       s.planes = f.planes;
       const std::string where = mid ? "mid_cell_ulps" : "node_ulps";
       cases.push_back(combinationCase("sparsegrid.hard." + where + ".l4." + std::string(ref::name(filter)),
-                                      std::string("query points one float32 ulp (2^-24) either side of the level-4 ") + (mid ? "mid-cells" : "nodes") +
-                                          " in x, " + std::string(ref::name(filter)),
+                                      std::string("query points one float32 ulp (2^-24) either side of the level-4 ") +
+                                          (mid ? "mid-cells" : "nodes") + " in x, " + std::string(ref::name(filter)),
                                       s));
     }
   for (ref::TextureSizing sizing : {ref::TextureSizing::Padded, ref::TextureSizing::Exact}) {
@@ -156,16 +166,18 @@ void addHardCases(std::vector<Case>& cases) {
     s.textures.sizing = sizing;
     s.framebuffer = FramebufferFormat::RGBA16;
     latticeCamera(s, glm::dvec3(0.0), 1.0 / 8, 9, 9, 9);
-    cases.push_back(combinationCase("sparsegrid.hard.coordinate_one." + str(ref::name(sizing)),
-                                    "query points at coordinate 0 and exactly 1.0 on every axis (" + str(ref::name(sizing)) + " textures)", s));
+    cases.push_back(combinationCase(
+        "sparsegrid.hard.coordinate_one." + str(ref::name(sizing)),
+        "query points at coordinate 0 and exactly 1.0 on every axis (" + str(ref::name(sizing)) + " textures)", s));
   }
   for (const char* field : {"zero", "constant_one"}) {
     SparseGridScene s = defaultSparseGridScene();
     s.data.field = field;
     s.grid.level = 5;
     s.framebuffer = FramebufferFormat::RGBA8;
-    cases.push_back(combinationCase(std::string("sparsegrid.hard.data_extremes.") + field,
-                                    std::string("data at the extreme ") + (field[0] == 'z' ? "0" : "1") + " everywhere, rgba8", s));
+    cases.push_back(
+        combinationCase(std::string("sparsegrid.hard.data_extremes.") + field,
+                        std::string("data at the extreme ") + (field[0] == 'z' ? "0" : "1") + " everywhere, rgba8", s));
   }
   // Extreme floats in float textures; float framebuffer, so nothing clamps or rounds them away.
   // Half floats go in unscaled, so that the texels hold the data itself (the paper's 1/n+ scaling
@@ -189,10 +201,11 @@ void addHardCases(std::vector<Case>& cases) {
       s.framebuffer = FramebufferFormat::RGBA32F;
       s.shading.mode = RenderMode::Mip;
       const std::string format(ref::name(e.format));
-      cases.push_back(combinationCase(std::string("sparsegrid.hard.float_extremes.") + e.field + "." + format + "." + str(ref::name(filter)),
-                                      "extreme floats in " + std::string(e.scaling == ref::ScalingPolicy::Unscaled ? "unscaled " : "") + format +
-                                          " textures (" + e.field + "), " + str(ref::name(filter)) + ", rgba32f framebuffer, level 5",
-                                      s));
+      cases.push_back(combinationCase(
+          std::string("sparsegrid.hard.float_extremes.") + e.field + "." + format + "." + str(ref::name(filter)),
+          "extreme floats in " + std::string(e.scaling == ref::ScalingPolicy::Unscaled ? "unscaled " : "") + format +
+              " textures (" + e.field + "), " + str(ref::name(filter)) + ", rgba32f framebuffer, level 5",
+          s));
     }
   for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {
     SparseGridScene s = defaultSparseGridScene();
@@ -200,15 +213,17 @@ void addHardCases(std::vector<Case>& cases) {
     s.grid.level = 6;
     s.framebuffer = fb;
     s.shading.mode = RenderMode::Mip;
-    cases.push_back(combinationCase("sparsegrid.hard.large_negative_surpluses." + str(ref::name(fb)),
-                                    "a sharp ridge: large negative surpluses, an interpolant below 0 (clamped by fixed point, "
-                                    "kept by float)",
-                                    s));
+    cases.push_back(
+        combinationCase("sparsegrid.hard.large_negative_surpluses." + str(ref::name(fb)),
+                        "a sharp ridge: large negative surpluses, an interpolant below 0 (clamped by fixed point, "
+                        "kept by float)",
+                        s));
   }
   {
     SparseGridScene s = defaultSparseGridScene();
     s.grid.level = 1;
-    cases.push_back(combinationCase("sparsegrid.hard.level1", "level 1: one grid (1,1,1), n+ = 1, no negative pass", s));
+    cases.push_back(
+        combinationCase("sparsegrid.hard.level1", "level 1: one grid (1,1,1), n+ = 1, no negative pass", s));
   }
   for (FramebufferFormat fb : {FramebufferFormat::RGBA8, FramebufferFormat::RGBA32F}) {
     SparseGridScene s = defaultSparseGridScene();

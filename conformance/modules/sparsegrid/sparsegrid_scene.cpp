@@ -64,7 +64,8 @@ SparseGridScene parseSparseGridScene(const nlohmann::json& j) {
     t.finish();
   }
   s.textures.scaling = parseEnum(r, "scaling", s.textures.scaling, ref::parseScalingPolicy, "scaled, unscaled");
-  s.framebuffer = parseEnum(r, "framebuffer", s.framebuffer, ref::parseFramebufferFormat, "rgba8, rgba12, rgba16, rgba16f, rgba32f");
+  s.framebuffer = parseEnum(r, "framebuffer", s.framebuffer, ref::parseFramebufferFormat,
+                            "rgba8, rgba12, rgba16, rgba16f, rgba32f");
   s.flushEachPass = r.get<bool>("flush_each_pass", false);
   s.passOrder = r.get<std::vector<int>>("pass_order", {});
   s.shading.mode = parseEnum(r, "mode", s.shading.mode, ref::parseRenderMode, "xray, mip, iso");
@@ -98,8 +99,8 @@ nlohmann::json toJson(const SparseGridScene& s) {
   j["level"] = s.grid.level;
   j["boundary"] = s.grid.boundary;
   j["texture"] = {{"format", ref::name(s.textures.format)}, {"sizing", ref::name(s.textures.sizing)},
-                  {"filter", ref::name(s.sampler.filter)}, {"wrap", ref::name(s.sampler.wrap)}, {"border", s.sampler.borderRed},
-                  {"max_extent", s.textures.maxExtent}};
+                  {"filter", ref::name(s.sampler.filter)},  {"wrap", ref::name(s.sampler.wrap)},
+                  {"border", s.sampler.borderRed},          {"max_extent", s.textures.maxExtent}};
   j["scaling"] = ref::name(s.textures.scaling);
   j["framebuffer"] = ref::name(s.framebuffer);
   j["flush_each_pass"] = s.flushEachPass;
@@ -108,7 +109,9 @@ nlohmann::json toJson(const SparseGridScene& s) {
   j["isovalue"] = s.shading.isovalue;
   j["ambient"] = s.shading.ambient;
   if (s.camera.origin)
-    j["camera"] = {{"origin", vec3Json(*s.camera.origin)}, {"dx", vec3Json(*s.camera.dx)}, {"dy", vec3Json(*s.camera.dy)},
+    j["camera"] = {{"origin", vec3Json(*s.camera.origin)},
+                   {"dx", vec3Json(*s.camera.dx)},
+                   {"dy", vec3Json(*s.camera.dy)},
                    {"dz", vec3Json(*s.camera.dz)}};
   else
     j["camera"] = {{"azimuth", s.camera.azimuth}, {"elevation", s.camera.elevation}};
@@ -134,7 +137,8 @@ ref::Field loadField(const DataSource& data) {
 ref::PlaneFrame makeFrame(const SparseGridScene& s) {
   try {
     if (s.camera.origin)
-      return ref::explicitFrame(*s.camera.origin, *s.camera.dx, *s.camera.dy, *s.camera.dz, s.width, s.height, s.planes);
+      return ref::explicitFrame(*s.camera.origin, *s.camera.dx, *s.camera.dy, *s.camera.dz, s.width, s.height,
+                                s.planes);
     return ref::orbitFrame(s.camera.azimuth, s.camera.elevation, s.width, s.height, s.planes);
   } catch (const std::invalid_argument& e) {
     throw SceneError(std::string("camera: ") + e.what());

@@ -27,12 +27,17 @@ nlohmann::json FetchCounts::toJson() const {
           {"wrong_block", wrongBlock},
           {"wrong_voxel", wrongVoxel},
           {"wrong_colour", wrongColour},
-          {"wrong_by_place", {{"coordinate_one", atCoordinateOne}, {"block_face", onBlockFace}, {"voxel_face", onVoxelFace}, {"inside", inside}}},
+          {"wrong_by_place",
+           {{"coordinate_one", atCoordinateOne},
+            {"block_face", onBlockFace},
+            {"voxel_face", onVoxelFace},
+            {"inside", inside}}},
           {"examples", examples}};
 }
 
-FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::TimeSeries& input, const ref::TransferFunction& tf, int step,
-                            const ref::PlaneFrame& frame, const emu::EmulatedDecode& decoded) {
+FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::TimeSeries& input,
+                            const ref::TransferFunction& tf, int step, const ref::PlaneFrame& frame,
+                            const emu::EmulatedDecode& decoded) {
   const ref::TimeVaryingLayout& L = tex.layout;
   FetchCounts c;
   std::size_t idx = 0;
@@ -60,9 +65,11 @@ FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::Time
         } catch (const std::out_of_range&) {
           addressable = false;  // a flag whose "address" is a colour: no fetch can be right
         }
-        bool wrongBlock = !addressable || s.indexTexel != want.indexTexel || s.refined != want.refined, wrongVoxel = false;
+        bool wrongBlock = !addressable || s.indexTexel != want.indexTexel || s.refined != want.refined,
+             wrongVoxel = false;
         if (!wrongBlock && want.refined) {
-          for (int a = 0; a < 3; ++a) wrongBlock |= s.refinementTexel[a] / L.blockSide != want.refinementTexel[a] / L.blockSide;
+          for (int a = 0; a < 3; ++a)
+            wrongBlock |= s.refinementTexel[a] / L.blockSide != want.refinementTexel[a] / L.blockSide;
           wrongVoxel = !wrongBlock && s.refinementTexel != want.refinementTexel;
         }
         if (!wrongBlock && !wrongVoxel) {
@@ -72,14 +79,16 @@ FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::Time
         (wrongBlock ? c.wrongBlock : c.wrongVoxel) += 1;
         (one ? c.atCoordinateOne : blockFace ? c.onBlockFace : voxelFace ? c.onVoxelFace : c.inside) += 1;
         if (c.examples.size() < 10)
-          c.examples.push_back({{"step", step},
-                                {"p", {p.x, p.y, p.z}},
-                                {"voxel", v},
-                                {"kind", wrongBlock ? "wrong_block" : "wrong_voxel"},
-                                {"index_texel", s.indexTexel},
-                                {"expected_index_texel", want.indexTexel},
-                                {"refinement_texel", s.refined ? nlohmann::json(s.refinementTexel) : nlohmann::json(nullptr)},
-                                {"expected_refinement_texel", want.refined ? nlohmann::json(want.refinementTexel) : nlohmann::json(nullptr)}});
+          c.examples.push_back(
+              {{"step", step},
+               {"p", {p.x, p.y, p.z}},
+               {"voxel", v},
+               {"kind", wrongBlock ? "wrong_block" : "wrong_voxel"},
+               {"index_texel", s.indexTexel},
+               {"expected_index_texel", want.indexTexel},
+               {"refinement_texel", s.refined ? nlohmann::json(s.refinementTexel) : nlohmann::json(nullptr)},
+               {"expected_refinement_texel",
+                want.refined ? nlohmann::json(want.refinementTexel) : nlohmann::json(nullptr)}});
       }
   return c;
 }

@@ -47,23 +47,32 @@ CaseResult capacityExceeded(CaseContext& ctx) {
   } catch (const ref::CapacityError& e) {
     encodeError = e.what();
   }
-  const bool encodeOk = encodeError.find("texels per axis") != std::string::npos && encodeError.find("the limit is 16") != std::string::npos;
-  r.oracles.push_back({"encode", encodeOk ? Verdict::Pass : Verdict::Fail,
-                       encodeOk ? "CapacityError: " + encodeError : "no clear capacity error (got '" + encodeError + "')", {}});
+  const bool encodeOk = encodeError.find("texels per axis") != std::string::npos &&
+                        encodeError.find("the limit is 16") != std::string::npos;
+  r.oracles.push_back(
+      {"encode",
+       encodeOk ? Verdict::Pass : Verdict::Fail,
+       encodeOk ? "CapacityError: " + encodeError : "no clear capacity error (got '" + encodeError + "')",
+       {}});
   if (ctx.gl()) {
     // A refinement texture beyond GL_MAX_3D_TEXTURE_SIZE: the GL path must refuse it.
-    ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, ref::transferFunction("gray"), blobs(kConfigs[4]).encoding);
+    ref::TimeVaryingTextures tex =
+        ref::encodeTimeVarying(series, ref::transferFunction("gray"), blobs(kConfigs[4]).encoding);
     const int big = ctx.gl()->info().max3DTextureSize + 1;
     tex.refinement.dims = {big, 1, 1};
     tex.refinement.texels.assign(static_cast<std::size_t>(big) * 4, 0);
     std::string glError;
     try {
-      gpu::decodePlanesGl(*ctx.gl(), tex, ref::DecoderVariant::TexelFetch, 0, ref::explicitFrame({0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 0.5}, 2, 2, 2));
+      gpu::decodePlanesGl(*ctx.gl(), tex, ref::DecoderVariant::TexelFetch, 0,
+                          ref::explicitFrame({0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 0.5}, 2, 2, 2));
     } catch (const gpu::GlUnsupported& e) {
       glError = e.what();
     }
     const bool glOk = glError.find("exceeds GL_MAX_3D_TEXTURE_SIZE") != std::string::npos;
-    r.oracles.push_back({"gl", glOk ? Verdict::Pass : Verdict::Fail, glOk ? "GlUnsupported: " + glError : "the GL path did not refuse the texture", {}});
+    r.oracles.push_back({"gl",
+                         glOk ? Verdict::Pass : Verdict::Fail,
+                         glOk ? "GlUnsupported: " + glError : "the GL path did not refuse the texture",
+                         {}});
   }
   concludeFromOracles(r);
   return r;
@@ -79,7 +88,8 @@ std::vector<Case> timeVaryingCases() {
       TimeVaryingScene s = blobs(c);
       s.frame = frame;
       cases.push_back(timeVaryingCase(std::string("timevarying.decode.") + c.name + "." + frame,
-                                      std::string("decode every plane of 6 steps of 32^3 blobs with the ") + c.name + " decoder at " + frame +
+                                      std::string("decode every plane of 6 steps of 32^3 blobs with the ") + c.name +
+                                          " decoder at " + frame +
                                           (c.corrected ? " (corrected: every fetch right)" : ""),
                                       s, {c.corrected, false}));
     }
@@ -95,10 +105,11 @@ std::vector<Case> timeVaryingCases() {
     for (ref::DecoderVariant v : {ref::DecoderVariant::Literal, ref::DecoderVariant::Paper}) {
       s.decoder = v;
       const bool literal = v == ref::DecoderVariant::Literal;
-      cases.push_back(timeVaryingCase(std::string("timevarying.decode.") + (literal ? "literal" : "paper_layout") + "." + frame,
-                                      literal ? std::string("the appendix shader word for word (DR / TEX_DIM = 0) on the paper's layout, ") + frame
-                                              : std::string("the appendix shader with a float division on the paper's layout, ") + frame,
-                                      s, {false, literal}));
+      cases.push_back(timeVaryingCase(
+          std::string("timevarying.decode.") + (literal ? "literal" : "paper_layout") + "." + frame,
+          literal ? std::string("the appendix shader word for word (DR / TEX_DIM = 0) on the paper's layout, ") + frame
+                  : std::string("the appendix shader with a float division on the paper's layout, ") + frame,
+          s, {false, literal}));
     }
   }
   for (const char* data : {"blobs", "plume"}) {
@@ -119,10 +130,11 @@ std::vector<Case> timeVaryingCases() {
       s.frame = "orbit";
       s.width = s.height = 96;
       s.planes = 64;
-      cases.push_back(timeVaryingCase(std::string("timevarying.composite.") + c.name + "." + data,
-                                      std::string("view-aligned slices composited back to front (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) into rgba8: ") +
-                                          data + ", " + c.name,
-                                      s, {c.corrected, false}));
+      cases.push_back(timeVaryingCase(
+          std::string("timevarying.composite.") + c.name + "." + data,
+          std::string("view-aligned slices composited back to front (SRC_ALPHA, ONE_MINUS_SRC_ALPHA) into rgba8: ") +
+              data + ", " + c.name,
+          s, {c.corrected, false}));
     }
   }
   {
@@ -131,30 +143,35 @@ std::vector<Case> timeVaryingCases() {
     s.steps = 3;
     s.transfer = "opaque";  // values >= 200 are opaque: the full step's cells (255) carry alpha 255
     s.encoding.alphaOne = ref::AlphaOnePolicy::Paper;
-    cases.push_back(timeVaryingCase("timevarying.hard.flag_collision.paper",
-                                    "a homogeneous colour with alpha 1 stored as the paper does: it reads as a refinement flag", s, {false, true}));
+    cases.push_back(timeVaryingCase(
+        "timevarying.hard.flag_collision.paper",
+        "a homogeneous colour with alpha 1 stored as the paper does: it reads as a refinement flag", s, {false, true}));
     s.encoding.alphaOne = ref::AlphaOnePolicy::Refine;
-    cases.push_back(timeVaryingCase("timevarying.hard.flag_collision.refine",
-                                    "the same colours with the corrected encoder (such cells refined): every fetch right", s, {true, false}));
+    cases.push_back(timeVaryingCase(
+        "timevarying.hard.flag_collision.refine",
+        "the same colours with the corrected encoder (such cells refined): every fetch right", s, {true, false}));
   }
   {
     TimeVaryingScene s = blobs(kConfigs[4]);
     s.encoding.hashBits = 3;  // eight hash values: distinct blocks collide, the full comparison keeps them apart
-    cases.push_back(timeVaryingCase("timevarying.hard.hash_collisions", "block hashes of 3 bits: collisions caught by the full comparison", s,
+    cases.push_back(timeVaryingCase("timevarying.hard.hash_collisions",
+                                    "block hashes of 3 bits: collisions caught by the full comparison", s,
                                     {true, false}));
   }
   for (const Config& c : kConfigs) {  // every decoder: the constant extremes go through each one's addressing
     TimeVaryingScene s = blobs(c);
     s.data = "empty_noise_full";
     s.steps = 3;
-    cases.push_back(timeVaryingCase(std::string("timevarying.hard.empty_noise_full.") + c.name,
-                                    "a time step entirely empty, one of noise, one entirely full (" + std::string(c.name) + ")", s,
-                                    {c.corrected, false}));
+    cases.push_back(
+        timeVaryingCase(std::string("timevarying.hard.empty_noise_full.") + c.name,
+                        "a time step entirely empty, one of noise, one entirely full (" + std::string(c.name) + ")", s,
+                        {c.corrected, false}));
   }
   Case capacity;
   capacity.id = "timevarying.hard.capacity_exceeded";
   capacity.system = "timevarying";
-  capacity.description = "textures over the capacity: a clear error when encoding, an unsupported texture on GL, never a corrupt one";
+  capacity.description =
+      "textures over the capacity: a clear error when encoding, an unsupported texture on GL, never a corrupt one";
   capacity.run = capacityExceeded;
   cases.push_back(capacity);
   return cases;

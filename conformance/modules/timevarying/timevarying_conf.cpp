@@ -6,27 +6,27 @@
 #include <chrono>
 #include <cmath>
 
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/case_images.h"
+#include "conformance/io/atomic_file.h"
 #include "conformance/modules/timevarying/fetch_classification.h"
 #include "conformance/modules/timevarying/timevarying_envelope_conf.h"
 #include "emulation/framebuffer_emu.h"
 #include "emulation/timevarying_emu.h"
-#include "reference/timevarying/exact_colours.h"
-#include "reference/timevarying/plume.h"
 #include "gpu/gl_error.h"
 #include "gpu/timevarying_gl.h"
+#include "reference/timevarying/exact_colours.h"
+#include "reference/timevarying/plume.h"
 
 namespace voxref::conf {
 namespace {
-
 
 io::Rgb8Image rgbPreview(const ref::RgbaStack& s, int plane) {
   io::Rgb8Image img{s.width, s.height, std::vector<std::uint8_t>(static_cast<std::size_t>(s.width) * s.height * 3)};
   for (int j = 0; j < s.height; ++j)
     for (int i = 0; i < s.width; ++i) {
       const ref::Rgba8& c = s.at(i, j, plane);
-      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(s.width) * (s.height - 1 - j))];
+      std::uint8_t* px =
+          &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(s.width) * (s.height - 1 - j))];
       px[0] = c[0], px[1] = c[1], px[2] = c[2];
     }
   return img;
@@ -36,12 +36,15 @@ io::Rgb8Image rgbPreview(const ref::RgbaStack& s, int plane) {
 // where GL and emulation differ, magenta outside the envelope, yellow only inside the quality-warning
 // envelope; blue where no oracle flags the pixel but the judged colour differs from the exact decoder
 // (the paper's traps); elsewhere the shown plane's luminance, dimmed.
-io::Rgb8Image maskPreview(const ref::RgbaStack& judged, const ref::RgbaStack& exact, int plane, const std::vector<PixelFlag>& flags) {
-  ref::Image base{judged.width, judged.height, std::vector<double>(static_cast<std::size_t>(judged.width) * judged.height)};
+io::Rgb8Image maskPreview(const ref::RgbaStack& judged, const ref::RgbaStack& exact, int plane,
+                          const std::vector<PixelFlag>& flags) {
+  ref::Image base{judged.width, judged.height,
+                  std::vector<double>(static_cast<std::size_t>(judged.width) * judged.height)};
   for (int j = 0; j < judged.height; ++j)
     for (int i = 0; i < judged.width; ++i) {
       const ref::Rgba8& c = judged.at(i, j, plane);
-      base.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * j] = (0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]) / 255.0;
+      base.pixels[static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * j] =
+          (0.299 * c[0] + 0.587 * c[1] + 0.114 * c[2]) / 255.0;
     }
   io::Rgb8Image img = errorMaskPreview(base, 1.0, flags);
   for (int j = 0; j < judged.height; ++j)
@@ -49,12 +52,12 @@ io::Rgb8Image maskPreview(const ref::RgbaStack& judged, const ref::RgbaStack& ex
       if (flags[static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * j] != PixelFlag::None) continue;
       bool differs = false;
       for (int k = 0; k < judged.planes && !differs; ++k) differs = judged.at(i, j, k) != exact.at(i, j, k);
-      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) + static_cast<std::size_t>(judged.width) * (judged.height - 1 - j))];
+      std::uint8_t* px = &img.rgb[3 * (static_cast<std::size_t>(i) +
+                                       static_cast<std::size_t>(judged.width) * (judged.height - 1 - j))];
       if (differs) px[0] = 40, px[1] = 90, px[2] = 255;
     }
   return img;
 }
-
 
 }  // namespace
 
@@ -85,7 +88,8 @@ struct StepTally {
 TimeVaryingRun prepareRun(CaseContext& ctx, const TimeVaryingScene& scene, CaseResult& result) {
   TimeVaryingRun run;
   const auto t0 = Clock::now();
-  run.series = ctx.cached<ref::TimeSeries>("timevarying:" + seriesKey(scene), [&] { return std::make_shared<ref::TimeSeries>(makeSeries(scene)); });
+  run.series = ctx.cached<ref::TimeSeries>("timevarying:" + seriesKey(scene),
+                                           [&] { return std::make_shared<ref::TimeSeries>(makeSeries(scene)); });
   run.tf = ref::transferFunction(scene.transfer);
   run.tex = ref::encodeTimeVarying(*run.series, run.tf, scene.encoding);
   result.secondsReference += secondsSince(t0);
@@ -113,8 +117,8 @@ TimeVaryingRun prepareRun(CaseContext& ctx, const TimeVaryingScene& scene, CaseR
 }
 
 // The GL decode or composite of one step; nothing (and why, in tally.glNotRun) where GL cannot run it.
-std::optional<ref::RgbaStack> renderStepGl(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, StepTally& tally,
-                                           CaseResult& result) {
+std::optional<ref::RgbaStack> renderStepGl(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene,
+                                           int step, StepTally& tally, CaseResult& result) {
   if (!ctx.gl()) {
     tally.glNotRun = "no GL context in this run";
     return std::nullopt;
@@ -123,8 +127,9 @@ std::optional<ref::RgbaStack> renderStepGl(CaseContext& ctx, const TimeVaryingRu
   try {
     const auto t0 = Clock::now();
     std::optional<ref::RgbaStack> gl =
-        scene.composite ? gpu::compositeGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride())
-                        : gpu::decodePlanesGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride());
+        scene.composite
+            ? gpu::compositeGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride())
+            : gpu::decodePlanesGl(*ctx.gl(), run.tex, scene.decoder, step, run.frame, {}, ctx.shaderOverride());
     result.secondsGl += secondsSince(t0);
     return gl;
   } catch (const gpu::GlUnsupported& e) {
@@ -135,14 +140,16 @@ std::optional<ref::RgbaStack> renderStepGl(CaseContext& ctx, const TimeVaryingRu
 
 // The right answer of one step: the exact colours, or for a composite the ideal composite rounded
 // to codes (whose real-valued distance to GL goes into the tally).
-ref::RgbaStack referenceOfStep(const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, const ref::RgbaStack* gl, StepTally& tally) {
+ref::RgbaStack referenceOfStep(const TimeVaryingRun& run, const TimeVaryingScene& scene, int step,
+                               const ref::RgbaStack* gl, StepTally& tally) {
   const ref::RgbaStack exact = ref::exactColours(*run.series, run.tf, step, run.frame);
   if (!scene.composite) return exact;
   const auto ideal = ref::idealComposite(exact, run.frame);
   ref::RgbaStack reference{run.frame.width, run.frame.height, 1, {}};
   for (const auto& c : ideal)
-    reference.colours.push_back({static_cast<std::uint8_t>(std::lround(c[0])), static_cast<std::uint8_t>(std::lround(c[1])),
-                                 static_cast<std::uint8_t>(std::lround(c[2])), static_cast<std::uint8_t>(std::lround(c[3]))});
+    reference.colours.push_back(
+        {static_cast<std::uint8_t>(std::lround(c[0])), static_cast<std::uint8_t>(std::lround(c[1])),
+         static_cast<std::uint8_t>(std::lround(c[2])), static_cast<std::uint8_t>(std::lround(c[3]))});
   if (gl)
     for (std::size_t i = 0; i < ideal.size(); ++i)
       for (int c = 0; c < 4; ++c) {
@@ -154,24 +161,30 @@ ref::RgbaStack referenceOfStep(const TimeVaryingRun& run, const TimeVaryingScene
 }
 
 // How many of GL's samples each departure changes: GL against the emulation without it.
-void countDepartures(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step, const ref::RgbaStack& gl, StepTally& tally) {
+void countDepartures(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingScene& scene, int step,
+                     const ref::RgbaStack& gl, StepTally& tally) {
   for (std::size_t d = 0; d < run.departures.size(); ++d) {
     const emu::Departure& dep = run.departures[d];
-    const ref::RgbaStack semantics = scene.composite
-                                         ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads(), dep.flushEachPass)
-                                         : emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads()).colours;
-    for (std::size_t i = 0; i < gl.colours.size(); ++i) tally.departureChanges[d] += gl.colours[i] != semantics.colours[i];
+    const ref::RgbaStack semantics =
+        scene.composite
+            ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads(),
+                                    dep.flushEachPass)
+            : emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, dep.semantics, ctx.threads()).colours;
+    for (std::size_t i = 0; i < gl.colours.size(); ++i)
+      tally.departureChanges[d] += gl.colours[i] != semantics.colours[i];
   }
 }
 
 // GL against the emulation (exact oracle) and the judged colours against the right ones (ideal).
-void compareStep(const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const ref::RgbaStack& reference, bool composite, StepTally& tally) {
+void compareStep(const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const ref::RgbaStack& reference,
+                 bool composite, StepTally& tally) {
   if (gl && emulated)
     for (std::size_t i = 0; i < gl->colours.size(); ++i) {
       ++tally.compared;
       if (gl->colours[i] != emulated->colours[i]) {
         ++tally.mismatched;
-        tally.maxExactDiff = std::max(tally.maxExactDiff, largestChannelDifference(gl->colours[i], emulated->colours[i]).difference);
+        tally.maxExactDiff =
+            std::max(tally.maxExactDiff, largestChannelDifference(gl->colours[i], emulated->colours[i]).difference);
       }
     }
   const ref::RgbaStack* judged = gl ? gl : emulated;
@@ -184,7 +197,8 @@ void compareStep(const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const
     ++tally.samples;
     if (judged->colours[i] != reference.colours[i]) {
       ++tally.wrongColours;
-      tally.maxIdealDiff = std::max(tally.maxIdealDiff, largestChannelDifference(judged->colours[i], reference.colours[i]).difference);
+      tally.maxIdealDiff =
+          std::max(tally.maxIdealDiff, largestChannelDifference(judged->colours[i], reference.colours[i]).difference);
     }
   }
 }
@@ -196,8 +210,11 @@ void measureStep(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingS
   std::optional<ref::RgbaStack> emulated;
   if (run.profile) {
     const auto t0 = Clock::now();
-    const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads());
-    emulated = scene.composite ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads()) : decoded.colours;
+    const emu::EmulatedDecode decoded =
+        emu::emulateDecodePlanes(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads());
+    emulated = scene.composite
+                   ? emu::emulateComposite(run.tex, scene.decoder, step, run.frame, *run.profile, ctx.threads())
+                   : decoded.colours;
     result.secondsEmulation += secondsSince(t0);
     tally.fetches.add(classifyFetches(run.tex, *run.series, run.tf, step, run.frame, decoded));
   }
@@ -206,7 +223,8 @@ void measureStep(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingS
   result.secondsReference += secondsSince(t0);
   if (gl) countDepartures(ctx, run, scene, step, *gl, tally);
   compareStep(gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, scene.composite, tally);
-  envelope.add(step, gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, ctx.threads(), tally.firstExact ? nullptr : &flags);
+  envelope.add(step, gl ? &*gl : nullptr, emulated ? &*emulated : nullptr, reference, ctx.threads(),
+               tally.firstExact ? nullptr : &flags);
   if (!tally.firstExact) {
     tally.firstExact = reference;
     tally.firstGl = gl;
@@ -216,44 +234,63 @@ void measureStep(CaseContext& ctx, const TimeVaryingRun& run, const TimeVaryingS
 
 OracleResult exactOracle(const StepTally& t, std::size_t steps, bool haveProfile) {
   if (!t.glNotRun.empty() || !haveProfile)
-    return {"exact", Verdict::NotRun, !t.glNotRun.empty() ? "GL not run: " + t.glNotRun : "no precision profile for this driver", nlohmann::json::object()};
-  return {"exact", t.mismatched ? Verdict::Fail : Verdict::Pass,
-          std::to_string(t.mismatched) + " of " + std::to_string(t.compared) + " RGBA samples differ over " + std::to_string(steps) + " time step(s)",
-          {{"compared_samples", t.compared}, {"mismatched_samples", t.mismatched}, {"mismatched_pixels", t.mismatched},
-           {"max_abs_diff_lsb", t.maxExactDiff}, {"steps", steps}}};
+    return {"exact", Verdict::NotRun,
+            !t.glNotRun.empty() ? "GL not run: " + t.glNotRun : "no precision profile for this driver",
+            nlohmann::json::object()};
+  return {"exact",
+          t.mismatched ? Verdict::Fail : Verdict::Pass,
+          std::to_string(t.mismatched) + " of " + std::to_string(t.compared) + " RGBA samples differ over " +
+              std::to_string(steps) + " time step(s)",
+          {{"compared_samples", t.compared},
+           {"mismatched_samples", t.mismatched},
+           {"mismatched_pixels", t.mismatched},
+           {"max_abs_diff_lsb", t.maxExactDiff},
+           {"steps", steps}}};
 }
 
 OracleResult fetchOracle(const FetchCounts& f, const TimeVaryingExpectation& expect, bool haveProfile) {
-  if (!haveProfile) return {"fetch", Verdict::NotRun, "no precision profile: the fetches are known only through the emulation", nlohmann::json::object()};
+  if (!haveProfile)
+    return {"fetch", Verdict::NotRun, "no precision profile: the fetches are known only through the emulation",
+            nlohmann::json::object()};
   const bool clean = f.wrong() == 0 && f.wrongColour == 0;
-  const Verdict v = expect.everyFetchRight ? (clean ? Verdict::Pass : Verdict::Fail)
+  const Verdict v = expect.everyFetchRight  ? (clean ? Verdict::Pass : Verdict::Fail)
                     : expect.trapReproduced ? (f.wrongColour > 0 ? Verdict::Pass : Verdict::Fail)
                                             : Verdict::Info;
   return {"fetch", v,
-          std::to_string(f.wrong()) + " of " + std::to_string(f.samples) + " fetches wrong (" + std::to_string(f.wrongBlock) + " wrong block, " +
-              std::to_string(f.wrongVoxel) + " wrong voxel; " + std::to_string(f.atCoordinateOne) + " at 1.0, " + std::to_string(f.onBlockFace) +
-              " on block faces, " + std::to_string(f.onVoxelFace) + " on voxel faces, " + std::to_string(f.inside) + " inside); " +
+          std::to_string(f.wrong()) + " of " + std::to_string(f.samples) + " fetches wrong (" +
+              std::to_string(f.wrongBlock) + " wrong block, " + std::to_string(f.wrongVoxel) + " wrong voxel; " +
+              std::to_string(f.atCoordinateOne) + " at 1.0, " + std::to_string(f.onBlockFace) + " on block faces, " +
+              std::to_string(f.onVoxelFace) + " on voxel faces, " + std::to_string(f.inside) + " inside); " +
               std::to_string(f.wrongColour) + " wrong colours" +
-              (expect.everyFetchRight ? " (must be 0)" : expect.trapReproduced ? " (the paper's trap must show)" : ""),
+              (expect.everyFetchRight  ? " (must be 0)"
+               : expect.trapReproduced ? " (the paper's trap must show)"
+                                       : ""),
           f.toJson()};
 }
 
 OracleResult idealOracle(const StepTally& t, bool composite) {
   if (composite) {
     const double rmse = t.samples ? std::sqrt(t.idealSumSq / (4.0 * static_cast<double>(t.samples))) : 0.0;
-    return {"ideal", Verdict::Info,
-            "composited image vs the exact colours composited in real arithmetic: max " + std::to_string(t.maxIdealDiff) + " LSB, RMSE " +
-                std::to_string(rmse) + " LSB",
+    return {"ideal",
+            Verdict::Info,
+            "composited image vs the exact colours composited in real arithmetic: max " +
+                std::to_string(t.maxIdealDiff) + " LSB, RMSE " + std::to_string(rmse) + " LSB",
             {{"max_abs_diff_lsb", t.maxIdealDiff}, {"rmse", rmse}, {"pixels", t.samples}}};
   }
-  return {"ideal", Verdict::Info,
-          std::to_string(t.wrongColours) + " of " + std::to_string(t.samples) + " samples decode another colour than the exact decoder" +
+  return {"ideal",
+          Verdict::Info,
+          std::to_string(t.wrongColours) + " of " + std::to_string(t.samples) +
+              " samples decode another colour than the exact decoder" +
               (t.wrongColours ? " (max channel difference " + std::to_string(t.maxIdealDiff) + ")" : ""),
-          {{"wrong_colours", t.wrongColours}, {"samples", t.samples}, {"max_abs_diff_lsb", t.maxIdealDiff}, {"rmse", nullptr}}};
+          {{"wrong_colours", t.wrongColours},
+           {"samples", t.samples},
+           {"max_abs_diff_lsb", t.maxIdealDiff},
+           {"rmse", nullptr}}};
 }
 
 // The first step's images: GL, emulated, the right answer, and the error mask.
-void writeImages(CaseContext& ctx, CaseResult& result, const StepTally& t, bool composite, const std::vector<PixelFlag>& flags) {
+void writeImages(CaseContext& ctx, CaseResult& result, const StepTally& t, bool composite,
+                 const std::vector<PixelFlag>& flags) {
   const int plane = composite ? 0 : t.firstExact->planes / 2;
   io::ensureDirectory(ctx.outDir() / "images");
   auto write = [&](const ref::RgbaStack& s, const std::string& kind, std::string& slot) {
@@ -265,14 +302,15 @@ void writeImages(CaseContext& ctx, CaseResult& result, const StepTally& t, bool 
   write(*t.firstExact, "reference", result.images.reference);
   if (t.firstGl || t.firstEmu) {
     result.images.errorMask = caseImageName(result.id, "error_mask");
-    io::writePng(ctx.outDir() / result.images.errorMask, maskPreview(t.firstGl ? *t.firstGl : *t.firstEmu, *t.firstExact, plane, flags));
+    io::writePng(ctx.outDir() / result.images.errorMask,
+                 maskPreview(t.firstGl ? *t.firstGl : *t.firstEmu, *t.firstExact, plane, flags));
   }
 }
 
 }  // namespace
 
-CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description, const TimeVaryingScene& scene,
-                            const TimeVaryingExpectation& expect) {
+CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description,
+                            const TimeVaryingScene& scene, const TimeVaryingExpectation& expect) {
   CaseResult result;
   result.id = id;
   result.system = "timevarying";
@@ -286,7 +324,8 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   for (int step : steps) measureStep(ctx, run, scene, step, tally, envelope, flags, result);
 
   for (std::size_t d = 0; d < run.departures.size(); ++d)
-    result.findings.push_back({std::string(run.departures[d].id), std::string(run.departures[d].description),
+    result.findings.push_back({std::string(run.departures[d].id),
+                               std::string(run.departures[d].description),
                                {{"samples_changed", tally.departureChanges[d]}, {"pixels_compared", tally.samples}}});
   result.worstPixels = envelope.worstPixels();
   result.oracles = {exactOracle(tally, steps.size(), run.profile != nullptr), envelope.result(),
@@ -301,12 +340,15 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   return result;
 }
 
-Case timeVaryingCase(std::string id, std::string description, TimeVaryingScene scene, TimeVaryingExpectation expectation) {
+Case timeVaryingCase(std::string id, std::string description, TimeVaryingScene scene,
+                     TimeVaryingExpectation expectation) {
   Case c;
   c.id = id;
   c.system = "timevarying";
   c.description = description;
-  c.run = [id, description, scene, expectation](CaseContext& ctx) { return judgeTimeVarying(ctx, id, description, scene, expectation); };
+  c.run = [id, description, scene, expectation](CaseContext& ctx) {
+    return judgeTimeVarying(ctx, id, description, scene, expectation);
+  };
   c.scene = toJson(scene);
   return c;
 }

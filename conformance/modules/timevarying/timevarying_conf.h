@@ -24,13 +24,14 @@
 namespace voxref::conf {
 
 struct TimeVaryingExpectation {
-  bool everyFetchRight = false;   // the fetch oracle fails on any wrong voxel, block or colour
-  bool trapReproduced = false;    // the fetch oracle fails unless some colours come out wrong (a paper trap)
+  bool everyFetchRight = false;  // the fetch oracle fails on any wrong voxel, block or colour
+  bool trapReproduced = false;   // the fetch oracle fails unless some colours come out wrong (a paper trap)
 };
 
-CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description, const TimeVaryingScene& scene,
-                            const TimeVaryingExpectation& expectation);
+CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::string& description,
+                            const TimeVaryingScene& scene, const TimeVaryingExpectation& expectation);
 
-Case timeVaryingCase(std::string id, std::string description, TimeVaryingScene scene, TimeVaryingExpectation expectation);
+Case timeVaryingCase(std::string id, std::string description, TimeVaryingScene scene,
+                     TimeVaryingExpectation expectation);
 
 }  // namespace voxref::conf

@@ -26,13 +26,13 @@ namespace voxref::conf {
 class TimeVaryingEnvelopeOracle {
  public:
   // Throws std::invalid_argument as TimeVaryingEnvelope does.
-  TimeVaryingEnvelopeOracle(const ref::TimeVaryingTextures& textures, ref::DecoderVariant decoder, const ref::PlaneFrame& frame,
-                            bool composite);
+  TimeVaryingEnvelopeOracle(const ref::TimeVaryingTextures& textures, ref::DecoderVariant decoder,
+                            const ref::PlaneFrame& frame, bool composite);
 
   // One step. gl and emulated may be null (not run); nothing is judged when both are. `flags`
   // (width x height), when given, receives this step's flags (call it for the first step only).
-  void add(int step, const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const ref::RgbaStack& reference, int threads,
-           std::vector<PixelFlag>* flags);
+  void add(int step, const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const ref::RgbaStack& reference,
+           int threads, std::vector<PixelFlag>* flags);
 
   OracleResult result() const;
   std::vector<PixelValues> worstPixels() const;
@@ -43,8 +43,8 @@ class TimeVaryingEnvelopeOracle {
     int kind;  // 0 exact mismatch, 1 envelope failure, 2 envelope warning, 3 ideal difference
     PixelValues values;
   };
-  void keep(int kind, int step, const std::vector<double>& scores, const ref::RgbaStack* gl, const ref::RgbaStack* emulated,
-            const ref::RgbaStack& reference, const std::vector<int>& channel);
+  void keep(int kind, int step, const std::vector<double>& scores, const ref::RgbaStack* gl,
+            const ref::RgbaStack* emulated, const ref::RgbaStack& reference, const std::vector<int>& channel);
   PixelValues valuesAt(std::size_t idx, int channel, const ref::RgbaStack* gl, const ref::RgbaStack* emulated,
                        const ref::RgbaStack& reference) const;
 

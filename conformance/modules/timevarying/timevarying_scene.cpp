@@ -7,7 +7,8 @@ namespace voxref::conf {
 TimeVaryingScene parseTimeVaryingScene(const nlohmann::json& j) {
   TimeVaryingScene s;
   JsonObjectReader r(j, "");
-  if (r.get<std::string>("system", "timevarying") != "timevarying") throw JsonFieldError("system: expected 'timevarying'");
+  if (r.get<std::string>("system", "timevarying") != "timevarying")
+    throw JsonFieldError("system: expected 'timevarying'");
   s.data = r.get<std::string>("data", s.data);
   if (s.data != "blobs" && s.data != "plume" && s.data != "plume_sparseness" && s.data != "empty_noise_full")
     throw JsonFieldError("data: '" + s.data + "' is not one of blobs, plume, plume_sparseness, empty_noise_full");
@@ -25,7 +26,9 @@ TimeVaryingScene parseTimeVaryingScene(const nlohmann::json& j) {
   s.encoding.level = r.getInt("level", s.encoding.level, 1, 8);
   const std::string enc = r.get<std::string>("encoding", std::string(ref::name(s.encoding.encoding)));
   const auto e = ref::parseIndexEncoding(enc);
-  if (!e) throw JsonFieldError("encoding: '" + enc + "' is not one of normalized_rgba8, normalized_rgba16, normalized_float, block_rgba8");
+  if (!e)
+    throw JsonFieldError("encoding: '" + enc +
+                         "' is not one of normalized_rgba8, normalized_rgba16, normalized_float, block_rgba8");
   s.encoding.encoding = *e;
   const std::string policy = r.get<std::string>("alpha_one", "refine");
   if (policy != "refine" && policy != "paper") throw JsonFieldError("alpha_one: expected refine or paper");
@@ -38,20 +41,26 @@ TimeVaryingScene parseTimeVaryingScene(const nlohmann::json& j) {
   s.decoder = *d;
   s.composite = r.get<bool>("composite", false);
   s.frame = r.get<std::string>("frame", s.frame);
-  if (s.frame != "voxel_centres" && s.frame != "voxel_faces" && s.frame != "face_ulps" && s.frame != "block_faces" && s.frame != "coordinate_one" &&
-      s.frame != "orbit")
-    throw JsonFieldError("frame: '" + s.frame + "' is not one of voxel_centres, voxel_faces, face_ulps, block_faces, coordinate_one, orbit");
+  if (s.frame != "voxel_centres" && s.frame != "voxel_faces" && s.frame != "face_ulps" && s.frame != "block_faces" &&
+      s.frame != "coordinate_one" && s.frame != "orbit")
+    throw JsonFieldError("frame: '" + s.frame +
+                         "' is not one of voxel_centres, voxel_faces, face_ulps, block_faces, coordinate_one, orbit");
   readFrameExtents(r, s.width, s.height, s.planes);
   s.onlySteps = r.get<std::vector<int>>("only_steps", {});
   for (int t : s.onlySteps)
-    if (t < 0 || t >= s.steps) throw JsonFieldError("only_steps: " + std::to_string(t) + " is outside 0.." + std::to_string(s.steps - 1));
+    if (t < 0 || t >= s.steps)
+      throw JsonFieldError("only_steps: " + std::to_string(t) + " is outside 0.." + std::to_string(s.steps - 1));
   r.finish();
   return s;
 }
 
 nlohmann::json toJson(const TimeVaryingScene& s) {
-  nlohmann::json j = {{"system", "timevarying"}, {"data", s.data},         {"side", s.side},
-                      {"steps", s.steps},         {"transfer", s.transfer}, {"level", s.encoding.level},
+  nlohmann::json j = {{"system", "timevarying"},
+                      {"data", s.data},
+                      {"side", s.side},
+                      {"steps", s.steps},
+                      {"transfer", s.transfer},
+                      {"level", s.encoding.level},
                       {"encoding", ref::name(s.encoding.encoding)},
                       {"alpha_one", s.encoding.alphaOne == ref::AlphaOnePolicy::Paper ? "paper" : "refine"},
                       {"paper_layout", s.encoding.paperLayout},
@@ -71,7 +80,9 @@ nlohmann::json toJson(const TimeVaryingScene& s) {
 
 std::string seriesKey(const TimeVaryingScene& s) {
   return s.data + "/" + std::to_string(s.side) + "/" + std::to_string(s.steps) + "/" +
-         (s.data == "plume_sparseness" ? std::to_string(s.sparseness) : s.data == "plume" ? std::to_string(s.plumeGain) : "");
+         (s.data == "plume_sparseness" ? std::to_string(s.sparseness)
+          : s.data == "plume"          ? std::to_string(s.plumeGain)
+                                       : "");
 }
 
 ref::TimeSeries makeSeries(const TimeVaryingScene& s) {
@@ -105,7 +116,8 @@ ref::PlaneFrame makeFrame(const TimeVaryingScene& s, const ref::TimeVaryingLayou
     const double b = h * layout.blockSide;  // x on the block faces 0, r, 2r, ...; y and z at voxel centres
     return ref::explicitFrame({-b / 2, 0, 0}, {b, 0, 0}, {0, h, 0}, {0, 0, h}, layout.cells, n, n);
   }
-  if (s.frame == "coordinate_one") return ref::explicitFrame({1.0 - h / 2, 0, 0}, {h, 0, 0}, {0, h, 0}, {0, 0, h}, 1, n, n);
+  if (s.frame == "coordinate_one")
+    return ref::explicitFrame({1.0 - h / 2, 0, 0}, {h, 0, 0}, {0, h, 0}, {0, 0, h}, 1, n, n);
   return ref::orbitFrame(30.0, 20.0, s.width, s.height, s.planes);
 }
 

@@ -19,12 +19,12 @@ struct TimeVaryingScene {
   // "empty_noise_full" (3 steps: all 0, noise without 0, all 255)
   std::string data = "blobs";
   int side = 32, steps = 6;
-  double sparseness = 0.9965;   // plume_sparseness only
-  double plumeGain = 4000.0;    // plume only
+  double sparseness = 0.9965;  // plume_sparseness only
+  double plumeGain = 4000.0;   // plume only
   std::string transfer = "gray";
   ref::TimeVaryingOptions encoding;
   ref::DecoderVariant decoder = ref::DecoderVariant::TexelFetch;
-  bool composite = false;       // false: every plane decoded and read back separately
+  bool composite = false;  // false: every plane decoded and read back separately
   // Sample points: "voxel_centres", "voxel_faces", "block_faces", "coordinate_one" (explicit
   // frames on the volume's lattice), "face_ulps" (x 2^-24 either side of every voxel face:
   // ref::straddlingFrame) or "orbit" (azimuth 30, elevation 20).

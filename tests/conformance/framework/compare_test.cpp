@@ -37,7 +37,7 @@ TEST(CompareValues, FiguresFromTheirDefinitions) {
   const ErrorFigures e = compareValues({0.0, 0.5, 1.0, 1.0}, {0.0, 0.5, 0.5, 1.0}, 1.0);
   EXPECT_EQ(e.maxAbs, 0.5);
   EXPECT_EQ(e.argMax, 2u);
-  EXPECT_EQ(e.rmse, 0.25);                        // sqrt(0.25 / 4)
+  EXPECT_EQ(e.rmse, 0.25);  // sqrt(0.25 / 4)
   EXPECT_NEAR(e.psnrDb, 20 * std::log10(4.0), 1e-12);
   EXPECT_TRUE(std::isinf(compareValues({1.0}, {1.0}, 1.0).psnrDb));
 }

@@ -45,7 +45,8 @@ TEST(Shard, ParsesAndRejects) {
   const Shard s = parseShard("3/8");
   EXPECT_EQ(s.index, 3);
   EXPECT_EQ(s.count, 8);
-  for (const char* bad : {"", "3", "0/2", "3/2", "1/0", "a/b", "1/2/3", "-1/2", "1 /2"}) EXPECT_THROW(parseShard(bad), std::invalid_argument) << bad;
+  for (const char* bad : {"", "3", "0/2", "3/2", "1/0", "a/b", "1/2/3", "-1/2", "1 /2"})
+    EXPECT_THROW(parseShard(bad), std::invalid_argument) << bad;
 }
 
 }  // namespace

@@ -53,7 +53,8 @@ TEST(LebFile, ErrorsNameTheFile) {
     readLebFile(bad);
     FAIL();
   } catch (const FormatError& e) {
-    EXPECT_NE(std::string(e.what()).find("bad.vxleb: offset 4: header: expected 32 bytes"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.vxleb: offset 4: header: expected 32 bytes"), std::string::npos)
+        << e.what();
   }
 }
 

@@ -28,13 +28,15 @@ class RawVolume : public ::testing::Test {
     }
     return p;
   }
-  std::filesystem::path dir_ = std::filesystem::temp_directory_path() / ("voxref_raw_volume_test_" + std::to_string(::getpid()));
+  std::filesystem::path dir_ =
+      std::filesystem::temp_directory_path() / ("voxref_raw_volume_test_" + std::to_string(::getpid()));
 };
 
 // The reader grows its buffer with what it has read (64 KiB, then doubling): volumes across
 // those steps read back exactly, plain and gzip, 8 and 16 bits.
 TEST_F(RawVolume, ReadsVolumesAcrossTheBufferSteps) {
-  for (const ref::Dims3 dims : {ref::Dims3{4, 3, 2}, ref::Dims3{64, 32, 32}, ref::Dims3{256, 256, 3}, ref::Dims3{97, 89, 71}}) {
+  for (const ref::Dims3 dims :
+       {ref::Dims3{4, 3, 2}, ref::Dims3{64, 32, 32}, ref::Dims3{256, 256, 3}, ref::Dims3{97, 89, 71}}) {
     std::string bytes(ref::sampleCount(dims) * 2, '\0');
     for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = static_cast<char>(i * 7 + i / 251);
     for (bool gz : {false, true}) {
@@ -76,10 +78,14 @@ TEST_F(RawVolume, HugeDimensionsAreRefusedNamingTheFile) {
     }
     return std::string();
   };
-  EXPECT_EQ(errorOf({65535, 65535, 65535}),
-            "volume file " + p.string() + ": the dimensions are out of range: volume of 65535x65535x65535 samples exceeds the limit of 1099511627776");
-  EXPECT_EQ(errorOf({0, 16, 16}), "volume file " + p.string() + ": the dimensions are out of range: volume extent 0 is not positive");
-  EXPECT_EQ(errorOf({10000, 10000, 10000}), "volume file " + p.string() + " holds 4096 bytes; the dimensions need 1000000000000");
+  EXPECT_EQ(
+      errorOf({65535, 65535, 65535}),
+      "volume file " + p.string() +
+          ": the dimensions are out of range: volume of 65535x65535x65535 samples exceeds the limit of 1099511627776");
+  EXPECT_EQ(errorOf({0, 16, 16}),
+            "volume file " + p.string() + ": the dimensions are out of range: volume extent 0 is not positive");
+  EXPECT_EQ(errorOf({10000, 10000, 10000}),
+            "volume file " + p.string() + " holds 4096 bytes; the dimensions need 1000000000000");
 }
 
 TEST_F(RawVolume, AGzipThatExpandsBeyondTheDimensionsIsRefused) {
@@ -88,7 +94,8 @@ TEST_F(RawVolume, AGzipThatExpandsBeyondTheDimensionsIsRefused) {
     (void)readRawVolumeU8(p, {16, 16, 16});
     FAIL() << "no error";
   } catch (const IoError& e) {
-    EXPECT_EQ(std::string(e.what()), "volume file " + p.string() + " holds more than 4096 bytes; the dimensions need 4096");
+    EXPECT_EQ(std::string(e.what()),
+              "volume file " + p.string() + " holds more than 4096 bytes; the dimensions need 4096");
   }
 }
 
@@ -112,15 +119,18 @@ TEST_F(RawVolume, AGzipStreamMustBeWholeAndItsChecksumMustMatch) {
   EXPECT_EQ(errorOf(gz), "");
   for (std::size_t cut : {4, 8, 20}) {
     const std::string e = errorOf(gz.substr(0, gz.size() - cut));
-    EXPECT_NE(e.find("is a truncated gzip stream: the file ends after "), std::string::npos) << "cut " << cut << ": " << e;
+    EXPECT_NE(e.find("is a truncated gzip stream: the file ends after "), std::string::npos)
+        << "cut " << cut << ": " << e;
   }
   std::string flipped = gz;
   flipped[gz.size() - 8] = static_cast<char>(~flipped[gz.size() - 8]);  // the trailer's CRC-32
-  EXPECT_NE(errorOf(flipped).find("incorrect data check (the CRC-32 in the gzip trailer does not match the data)"), std::string::npos)
+  EXPECT_NE(errorOf(flipped).find("incorrect data check (the CRC-32 in the gzip trailer does not match the data)"),
+            std::string::npos)
       << errorOf(flipped);
   EXPECT_NE(errorOf(gz + "garbage").find("is corrupt at byte"), std::string::npos);
   EXPECT_EQ(errorOf(gz + gz, {16, 16, 32}), "");  // gzip members one after the other are one stream
-  EXPECT_NE(errorOf(gz + gz.substr(0, gz.size() - 8), {16, 16, 32}).find("is a truncated gzip stream"), std::string::npos);
+  EXPECT_NE(errorOf(gz + gz.substr(0, gz.size() - 8), {16, 16, 32}).find("is a truncated gzip stream"),
+            std::string::npos);
 }
 
 TEST_F(RawVolume, AFolderIsNotAVolume) {

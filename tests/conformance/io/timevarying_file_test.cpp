@@ -15,7 +15,8 @@ namespace {
 
 // Errors of a file name the file, then the container's offset and field.
 TEST(TimeVaryingFile, ErrorsNameTheFileThenTheOffset) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("voxref-tvfile-" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("voxref-tvfile-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   ref::TimeVaryingFile f;
   f.transfer = ref::transferFunction("plume");
@@ -27,7 +28,8 @@ TEST(TimeVaryingFile, ErrorsNameTheFileThenTheOffset) {
     (void)readTimeVarying(dir / "bad.vxtv");
     ADD_FAILURE() << "read a file that is not a container";
   } catch (const FormatError& e) {
-    EXPECT_EQ(std::string(e.what()), (dir / "bad.vxtv").string() + ": offset 0: magic: expected 'VXTV' (not a .vxtv file)");
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "bad.vxtv").string() + ": offset 0: magic: expected 'VXTV' (not a .vxtv file)");
   }
   std::filesystem::remove_all(dir);
 }
@@ -51,7 +53,9 @@ TEST(TimeVaryingFile, EverySharedVolumeRoundTripsAsOneTimeStep) {
     for (int z = 0; z < dims[2]; ++z)
       for (int y = 0; y < dims[1]; ++y)
         for (int x = 0; x < dims[0]; ++x, ++i)
-          wrong += decoded[i] != f.transfer(s.steps[0][static_cast<std::size_t>(x) + static_cast<std::size_t>(s.side) * (y + static_cast<std::size_t>(s.side) * z)]);
+          wrong += decoded[i] !=
+                   f.transfer(s.steps[0][static_cast<std::size_t>(x) + static_cast<std::size_t>(s.side) *
+                                                                           (y + static_cast<std::size_t>(s.side) * z)]);
     EXPECT_EQ(wrong, 0u) << file;
   }
 }

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 namespace voxref::ref {
 namespace {
@@ -48,7 +48,8 @@ TEST(OrbitFrame, CoversTheUnitCube) {
   // Snapping moves each component by at most 2^-22, so a dot product of orthogonal vectors moves
   // by at most (|a|_1 + |b|_1) 2^-22 + 3 * 2^-44.
   auto bound = [](glm::dvec3 a, glm::dvec3 b) {
-    const double l1 = std::fabs(a.x) + std::fabs(a.y) + std::fabs(a.z) + std::fabs(b.x) + std::fabs(b.y) + std::fabs(b.z);
+    const double l1 =
+        std::fabs(a.x) + std::fabs(a.y) + std::fabs(a.z) + std::fabs(b.x) + std::fabs(b.y) + std::fabs(b.z);
     return l1 * std::ldexp(1.0, -22) + 3 * std::ldexp(1.0, -44);
   };
   EXPECT_NEAR(glm::dot(f.dx, f.dy), 0.0, bound(f.dx, f.dy));
@@ -63,18 +64,21 @@ TEST(ExplicitFrame, RejectsOffLatticeAndHugeFrames) {
   EXPECT_THROW(explicitFrame({0, 0, 0}, {0.5, 0, 0}, {0, 0.5, 0}, {0, 0, 0.5}, 0, 16, 16), std::invalid_argument);
   const PlaneFrame f = explicitFrame({-1.0 / 32, -1.0 / 32, -1.0 / 32}, {1.0 / 16, 0, 0}, {0, 1.0 / 16, 0},
                                      {0, 0, 1.0 / 16}, 17, 17, 17);
-  EXPECT_EQ(f.sample(0, 0, 0), glm::dvec3(0.0));   // on the corner node
+  EXPECT_EQ(f.sample(0, 0, 0), glm::dvec3(0.0));     // on the corner node
   EXPECT_EQ(f.sample(16, 16, 16), glm::dvec3(1.0));  // coordinate 1.0 exactly
 }
 
 TEST(ExplicitFrame, OffTheLatticeButExactSampleBySample) {
   const double u = std::ldexp(1.0, -24);
   // dx = 2^-23 is off the 2^-21 lattice; every sample 0.75 +- 2^-24 is a float32.
-  const PlaneFrame f = explicitFrame({0.75 - 2 * u, 0.5, 0.5}, {2 * u, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1);
+  const PlaneFrame f =
+      explicitFrame({0.75 - 2 * u, 0.5, 0.5}, {2 * u, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1);
   EXPECT_EQ(f.sample(0, 0, 0).x, 0.75 - u);
   EXPECT_EQ(f.sample(1, 0, 0).x, 0.75 + u);
   // Off the lattice and not exact: 0.5 + 2^-26 is not a float32.
-  EXPECT_THROW(explicitFrame({0.5, 0.5, 0.5}, {std::ldexp(1.0, -25), 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1), std::invalid_argument);
+  EXPECT_THROW(
+      explicitFrame({0.5, 0.5, 0.5}, {std::ldexp(1.0, -25), 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 2, 1, 1),
+      std::invalid_argument);
 }
 
 TEST(StraddlingFrame, OneUlpEitherSideOfEveryFace) {

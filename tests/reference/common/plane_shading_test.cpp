@@ -30,7 +30,8 @@ TEST(ShadePlanes, XRayIsTheRiemannSumOfTheLineIntegral) {
 
 TEST(ShadePlanes, MipIsTheMaximumAndNotBelowZero) {
   const PlaneFrame f = axisFrame(8);
-  const Image a = shadePlanes(stackOf(f, [](int i, int, int k) { return i == 3 && k == 5 ? 0.75 : 0.125; }), f, {RenderMode::Mip});
+  const Image a =
+      shadePlanes(stackOf(f, [](int i, int, int k) { return i == 3 && k == 5 ? 0.75 : 0.125; }), f, {RenderMode::Mip});
   EXPECT_EQ(a.pixels[3], 0.75);
   EXPECT_EQ(a.pixels[2], 0.125);
   const Image b = shadePlanes(stackOf(f, [](int, int, int) { return -1.0; }), f, {RenderMode::Mip});
@@ -45,8 +46,8 @@ TEST(ShadePlanes, IsoHitsTheFirstCrossingWithAHeadOnNormal) {
   EXPECT_DOUBLE_EQ(img.pixels[0], 1.0);
   // value = (i + k) / 8: the gradient is (1, 0, 1) / |.| in world space, 45 degrees from the
   // view direction, so the Lambert term is 1/sqrt(2) (central differences are exact on a linear field).
-  const Image tilted = shadePlanes(stackOf(f, [](int i, int, int k) { return (i + k) / 8.0; }), f,
-                                   {RenderMode::Iso, 0.3, 0.15});
+  const Image tilted =
+      shadePlanes(stackOf(f, [](int i, int, int k) { return (i + k) / 8.0; }), f, {RenderMode::Iso, 0.3, 0.15});
   EXPECT_NEAR(tilted.pixels[0], 0.15 + 0.85 * std::sqrt(0.5), 1e-15);
   // No crossing: background.
   const Image none = shadePlanes(stackOf(f, [](int, int, int) { return 0.1; }), f, {RenderMode::Iso, 0.3});

@@ -19,7 +19,8 @@ TEST(RoundHalfEven, TiesGoToEven) {
 
 TEST(UnormFromDouble, EveryCodeRoundTrips) {
   for (int bits : {8, 12, 16})
-    for (std::uint32_t k = 0; k < (1u << bits); ++k) ASSERT_EQ(unormFromDouble(unormToDouble(k, bits), bits), k) << bits;
+    for (std::uint32_t k = 0; k < (1u << bits); ++k)
+      ASSERT_EQ(unormFromDouble(unormToDouble(k, bits), bits), k) << bits;
 }
 
 TEST(UnormFromDouble, ExactTiesAndClamping) {
@@ -40,16 +41,16 @@ TEST(UnormFromDouble, ExactTiesAndClamping) {
 TEST(HalfFromDouble, HandDerivedValues) {
   EXPECT_EQ(halfFromDouble(1.0), 0x3c00);
   EXPECT_EQ(halfFromDouble(-2.0), 0xc000);
-  EXPECT_EQ(halfFromDouble(65504.0), 0x7bff);                    // largest finite
-  EXPECT_EQ(halfFromDouble(65519.99), 0x7bff);                   // below the overflow tie
-  EXPECT_EQ(halfFromDouble(65520.0), 0x7c00);                    // tie between 65504 and 2^16: to even = inf
-  EXPECT_EQ(halfFromDouble(std::ldexp(1.0, -24)), 0x0001);       // smallest subnormal
-  EXPECT_EQ(halfFromDouble(std::ldexp(1.0, -25)), 0x0000);       // tie 0 / 2^-24: to even 0
-  EXPECT_EQ(halfFromDouble(3 * std::ldexp(1.0, -25)), 0x0002);   // tie 1 / 2 (x 2^-24): to even 2
-  EXPECT_EQ(halfFromDouble(1.0 + std::ldexp(1.0, -11)), 0x3c00); // tie: to even mantissa 0
+  EXPECT_EQ(halfFromDouble(65504.0), 0x7bff);                     // largest finite
+  EXPECT_EQ(halfFromDouble(65519.99), 0x7bff);                    // below the overflow tie
+  EXPECT_EQ(halfFromDouble(65520.0), 0x7c00);                     // tie between 65504 and 2^16: to even = inf
+  EXPECT_EQ(halfFromDouble(std::ldexp(1.0, -24)), 0x0001);        // smallest subnormal
+  EXPECT_EQ(halfFromDouble(std::ldexp(1.0, -25)), 0x0000);        // tie 0 / 2^-24: to even 0
+  EXPECT_EQ(halfFromDouble(3 * std::ldexp(1.0, -25)), 0x0002);    // tie 1 / 2 (x 2^-24): to even 2
+  EXPECT_EQ(halfFromDouble(1.0 + std::ldexp(1.0, -11)), 0x3c00);  // tie: to even mantissa 0
   EXPECT_EQ(halfFromDouble(1.0 + 3 * std::ldexp(1.0, -11)), 0x3c02);
   EXPECT_EQ(halfFromDouble(1.0 + std::ldexp(1.0, -11) + std::ldexp(1.0, -40)), 0x3c01);  // one rounding only
-  EXPECT_EQ(halfFromDouble(std::ldexp(1023.5, -24)), 0x0400);    // subnormal carrying into the normals
+  EXPECT_EQ(halfFromDouble(std::ldexp(1023.5, -24)), 0x0400);  // subnormal carrying into the normals
   EXPECT_EQ(halfFromDouble(-0.0), 0x8000);
   EXPECT_EQ(halfFromDouble(INFINITY), 0x7c00);
   EXPECT_EQ(halfFromDouble(std::nan("")) & 0x7c00, 0x7c00);

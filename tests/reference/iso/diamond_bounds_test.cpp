@@ -79,7 +79,8 @@ TEST(DiamondBounds, ContainTheRangeOverEveryDiamondsTetrahedra) {
 
 TEST(DiamondBounds, ErrorIsZeroOnALinearFieldAndNestedOnASpike) {
   // f = 2x + 4y + 8z: every midpoint prediction is exact.
-  const Volume<std::uint16_t> linear = volumeOf({17, 17, 17}, [](int x, int y, int z) { return 2.0 * x + 4.0 * y + 8.0 * z; });
+  const Volume<std::uint16_t> linear =
+      volumeOf({17, 17, 17}, [](int x, int y, int z) { return 2.0 * x + 4.0 * y + 8.0 * z; });
   const DenseGridField lf = test_support::denseField(linear);
   const DiamondBounds lb = computeDiamondBounds(lf.grid(), lf.values());
   EXPECT_EQ(*std::max_element(lb.error.begin(), lb.error.end()), 0.0f);
@@ -104,7 +105,8 @@ TEST(DiamondBounds, ErrorIsZeroOnALinearFieldAndNestedOnASpike) {
 TEST(DiamondBounds, SameForEveryThreadCount) {
   const Volume<std::uint16_t> v = test_support::ballVolume({20, 11, 17}, 9.0, 5.0, 7.0);
   const DenseGridField f = test_support::denseField(v);
-  const DiamondBounds a = computeDiamondBounds(f.grid(), f.values(), 1), b = computeDiamondBounds(f.grid(), f.values(), 2);
+  const DiamondBounds a = computeDiamondBounds(f.grid(), f.values(), 1),
+                      b = computeDiamondBounds(f.grid(), f.values(), 2);
   EXPECT_EQ(a.min, b.min);
   EXPECT_EQ(a.max, b.max);
   EXPECT_EQ(a.error, b.error);
@@ -155,7 +157,8 @@ TEST(DiamondBoundsFile, AHugeGridClaimIsRefusedBeforeAllocating) {
     parseDiamondBounds(bytes);
     FAIL() << "no error";
   } catch (const StreamError& e) {
-    EXPECT_EQ(std::string(e.what()), "offset 108: size: a grid of 1076890625 points needs 8615125012 bytes, the stream has 108");
+    EXPECT_EQ(std::string(e.what()),
+              "offset 108: size: a grid of 1076890625 points needs 8615125012 bytes, the stream has 108");
   }
 }
 

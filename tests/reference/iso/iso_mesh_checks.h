@@ -14,7 +14,8 @@ namespace voxref::ref::test_support {
 inline std::size_t unmatchedDirectedEdges(const IsoMesh& m) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
   for (std::size_t t = 0; t < m.indices.size(); t += 3)
-    for (int e = 0; e < 3; ++e) ++edges[{m.indices[t + static_cast<std::size_t>(e)], m.indices[t + static_cast<std::size_t>((e + 1) % 3)]}];
+    for (int e = 0; e < 3; ++e)
+      ++edges[{m.indices[t + static_cast<std::size_t>(e)], m.indices[t + static_cast<std::size_t>((e + 1) % 3)]}];
   std::size_t unmatched = 0;
   for (const auto& [e, count] : edges) {
     const auto it = edges.find({e.second, e.first});
@@ -26,7 +27,8 @@ inline std::size_t unmatchedDirectedEdges(const IsoMesh& m) {
 
 inline bool hasRepeatedIndex(const IsoMesh& m) {
   for (std::size_t t = 0; t < m.indices.size(); t += 3)
-    if (m.indices[t] == m.indices[t + 1] || m.indices[t + 1] == m.indices[t + 2] || m.indices[t] == m.indices[t + 2]) return true;
+    if (m.indices[t] == m.indices[t + 1] || m.indices[t + 1] == m.indices[t + 2] || m.indices[t] == m.indices[t + 2])
+      return true;
   return false;
 }
 

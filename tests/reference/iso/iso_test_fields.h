@@ -17,13 +17,16 @@ inline Volume<std::uint16_t> volumeOf(const Dims3& dims, const std::function<dou
   Volume<std::uint16_t> v(dims);
   for (int z = 0; z < dims[2]; ++z)
     for (int y = 0; y < dims[1]; ++y)
-      for (int x = 0; x < dims[0]; ++x) v.at(x, y, z) = static_cast<std::uint16_t>(std::lround(std::clamp(f(x, y, z), 0.0, 65535.0)));
+      for (int x = 0; x < dims[0]; ++x)
+        v.at(x, y, z) = static_cast<std::uint16_t>(std::lround(std::clamp(f(x, y, z), 0.0, 65535.0)));
   return v;
 }
 
 // A ball: 1000 - 100 * distance from c (values above 0 within radius 10).
 inline Volume<std::uint16_t> ballVolume(const Dims3& dims, double cx, double cy, double cz) {
-  return volumeOf(dims, [=](int x, int y, int z) { return 1000.0 - 100.0 * std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz)); });
+  return volumeOf(dims, [=](int x, int y, int z) {
+    return 1000.0 - 100.0 * std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy) + (z - cz) * (z - cz));
+  });
 }
 
 inline DenseGridField denseField(const Volume<std::uint16_t>& v) { return DenseGridField(v, quantizedGradients(v)); }

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "reference/iso/extraction.h"
 #include "tests/reference/iso/iso_mesh_checks.h"
@@ -43,18 +43,21 @@ TEST(MarchingTetrahedra, ABallIsClosedAndFacesOutwards) {
   ASSERT_EQ(m.triangleDiamond.size(), m.triangleCount());
   for (const glm::vec3& p : m.positions) EXPECT_NEAR(glm::length(glm::dvec3(p) - c), 5.0, 0.1);
   for (std::size_t t = 0; t < m.indices.size(); t += 3) {
-    const glm::dvec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]], d = m.positions[m.indices[t + 2]];
+    const glm::dvec3 a = m.positions[m.indices[t]], b = m.positions[m.indices[t + 1]],
+                     d = m.positions[m.indices[t + 2]];
     const glm::dvec3 n = glm::cross(b - a, d - a);
     EXPECT_GT(glm::dot(n, (a + b + d) / 3.0 - c), 0.0) << "triangle " << t / 3 << " faces inwards";
   }
   for (std::size_t v = 0; v < m.normals.size(); ++v)
-    EXPECT_GT(glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.positions[v]) - c), 0.9 * glm::length(glm::dvec3(m.positions[v]) - c));
+    EXPECT_GT(glm::dot(glm::dvec3(m.normals[v]), glm::dvec3(m.positions[v]) - c),
+              0.9 * glm::length(glm::dvec3(m.positions[v]) - c));
 }
 
 TEST(MarchingTetrahedra, IsovalueEqualToManyVertexValuesStaysClosed) {
   // Values in steps of 100, so hundreds of grid points equal the isovalue 500 exactly.
   const Volume<std::uint16_t> v = volumeOf({17, 17, 17}, [](int x, int y, int z) {
-    return 1000.0 - 100.0 * std::round(std::sqrt((x - 8.0) * (x - 8.0) + (y - 8.0) * (y - 8.0) + (z - 8.0) * (z - 8.0)));
+    return 1000.0 -
+           100.0 * std::round(std::sqrt((x - 8.0) * (x - 8.0) + (y - 8.0) * (y - 8.0) + (z - 8.0) * (z - 8.0)));
   });
   int equal = 0;
   for (std::uint16_t s : v.data()) equal += s == 500;
@@ -86,7 +89,8 @@ TEST(MarchingTetrahedra, AFlatRegionAtTheIsovalueIsInsideAndClosed) {
   EXPECT_EQ(unmatchedDirectedEdges(m), 0u);
   EXPECT_FALSE(hasRepeatedIndex(m));
   // Every vertex is a grid point of the plateau (t = 1 on every crossing edge).
-  for (const glm::vec3& p : m.positions) EXPECT_EQ(v.at(static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.z)), 500);
+  for (const glm::vec3& p : m.positions)
+    EXPECT_EQ(v.at(static_cast<int>(p.x), static_cast<int>(p.y), static_cast<int>(p.z)), 500);
 }
 
 TEST(MarchingTetrahedra, ASingleVoxelFeatureGivesASmallClosedSurface) {
@@ -95,7 +99,8 @@ TEST(MarchingTetrahedra, ASingleVoxelFeatureGivesASmallClosedSurface) {
   const IsoMesh m = extractFull(v, 500.0);
   ASSERT_GE(m.triangleCount(), 4u);
   EXPECT_EQ(unmatchedDirectedEdges(m), 0u);
-  for (const glm::vec3& p : m.positions) EXPECT_LE(glm::length(glm::dvec3(p) - glm::dvec3(9, 6, 11)), 0.5 * std::sqrt(3.0) + 1e-6);
+  for (const glm::vec3& p : m.positions)
+    EXPECT_LE(glm::length(glm::dvec3(p) - glm::dvec3(9, 6, 11)), 0.5 * std::sqrt(3.0) + 1e-6);
 }
 
 TEST(MarchingTetrahedra, ASurfaceTouchingTheVolumeBoundaryIsOpenOnlyThere) {
@@ -116,10 +121,12 @@ TEST(MarchingTetrahedra, ASurfaceTouchingTheVolumeBoundaryIsOpenOnlyThere) {
     }
   std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
   for (std::size_t t = 0; t < m.indices.size(); t += 3)
-    for (int e = 0; e < 3; ++e) ++edges[{m.indices[t + static_cast<std::size_t>(e)], m.indices[t + static_cast<std::size_t>((e + 1) % 3)]}];
+    for (int e = 0; e < 3; ++e)
+      ++edges[{m.indices[t + static_cast<std::size_t>(e)], m.indices[t + static_cast<std::size_t>((e + 1) % 3)]}];
   for (const auto& [e, count] : edges)
     if (edges.count({e.second, e.first}) == 0) {
-      EXPECT_TRUE(onBoundary(m.positions[e.first]) && onBoundary(m.positions[e.second])) << "an open edge inside the volume";
+      EXPECT_TRUE(onBoundary(m.positions[e.first]) && onBoundary(m.positions[e.second]))
+          << "an open edge inside the volume";
     }
 }
 

@@ -42,13 +42,15 @@ std::uint64_t bruteForceLimitedCost(const std::vector<std::uint64_t>& counts, in
     if (c) used.push_back(c);
   std::uint64_t best = ~0ULL;
   std::vector<int> len(used.size(), 1);
-  std::function<void(std::size_t, std::uint64_t, std::uint64_t)> rec = [&](std::size_t i, std::uint64_t kraft, std::uint64_t c) {
+  std::function<void(std::size_t, std::uint64_t, std::uint64_t)> rec = [&](std::size_t i, std::uint64_t kraft,
+                                                                           std::uint64_t c) {
     if (kraft > (1ULL << limit)) return;
     if (i == used.size()) {
       best = std::min(best, c);
       return;
     }
-    for (int l = 1; l <= limit; ++l) rec(i + 1, kraft + (1ULL << (limit - l)), c + used[i] * static_cast<std::uint64_t>(l));
+    for (int l = 1; l <= limit; ++l)
+      rec(i + 1, kraft + (1ULL << (limit - l)), c + used[i] * static_cast<std::uint64_t>(l));
   };
   rec(0, 0, 0);
   return best;
@@ -71,7 +73,8 @@ TEST(Huffman, PackageMergeIsOptimalUnderABindingLimit) {
   for (int trial = 0; trial < 60; ++trial) {
     std::vector<std::uint64_t> counts(3 + rng() % 4);
     // Fibonacci-like weights make deep Huffman trees, so a limit of 3 binds.
-    for (std::size_t i = 0; i < counts.size(); ++i) counts[i] = 1 + (rng() % 3) + (i < 2 ? 0 : counts[i - 1] + counts[i - 2]);
+    for (std::size_t i = 0; i < counts.size(); ++i)
+      counts[i] = 1 + (rng() % 3) + (i < 2 ? 0 : counts[i - 1] + counts[i - 2]);
     const int limit = 3;
     const auto lengths = huffmanCodeLengths(counts, limit);
     EXPECT_EQ(codeLengthProblem(lengths, limit), "");
@@ -90,7 +93,8 @@ TEST(Huffman, OneSymbolGetsOneBitAndUnusedSymbolsNone) {
 TEST(Huffman, CanonicalCodesOfRfc1951) {
   // RFC 1951 section 3.2.2's example: lengths (3, 3, 3, 3, 3, 2, 4, 4) for A..H.
   const std::vector<std::uint8_t> lengths{3, 3, 3, 3, 3, 2, 4, 4};
-  EXPECT_EQ(canonicalCodes(lengths), (std::vector<std::uint32_t>{0b010, 0b011, 0b100, 0b101, 0b110, 0b00, 0b1110, 0b1111}));
+  EXPECT_EQ(canonicalCodes(lengths),
+            (std::vector<std::uint32_t>{0b010, 0b011, 0b100, 0b101, 0b110, 0b00, 0b1110, 0b1111}));
   const HuffmanDecodeTable t(lengths);
   ASSERT_EQ(t.bits(), 4);
   EXPECT_EQ(t.entry(0b0000), (5 << 4) | 2);  // F = 00
@@ -106,8 +110,11 @@ TEST(Huffman, IncompleteCodesLeaveInvalidEntries) {
 }
 
 TEST(Huffman, LengthsThatAreNotAPrefixCodeAreNamed) {
-  EXPECT_NE(codeLengthProblem(std::vector<std::uint8_t>{1, 1, 1}).find("not those of a prefix-free code (Kraft sum 6144/4096 > 1)"), std::string::npos);
-  EXPECT_NE(codeLengthProblem(std::vector<std::uint8_t>{13, 1}).find("symbol 0 has a code of 13 bits"), std::string::npos);
+  EXPECT_NE(codeLengthProblem(std::vector<std::uint8_t>{1, 1, 1})
+                .find("not those of a prefix-free code (Kraft sum 6144/4096 > 1)"),
+            std::string::npos);
+  EXPECT_NE(codeLengthProblem(std::vector<std::uint8_t>{13, 1}).find("symbol 0 has a code of 13 bits"),
+            std::string::npos);
   EXPECT_EQ(codeLengthProblem(std::vector<std::uint8_t>{1, 2, 2}), "");
 }
 

@@ -34,8 +34,8 @@ TEST(Lead1, BitsOfOneValueFollowTheFormat) {
   Lead1Code code;
   code.valueBits = 8;
   code.lengths.assign(81, 0);
-  code.lengths[0] = 1;  // context 0, symbol 0
-  code.lengths[3] = 1;  // context 0, symbol 3
+  code.lengths[0] = 1;          // context 0, symbol 0
+  code.lengths[3] = 1;          // context 0, symbol 3
   code.lengths[3 * 9 + 0] = 1;  // context 3: symbols 0 and 3
   code.lengths[3 * 9 + 3] = 1;
   BitWriter w;
@@ -104,7 +104,8 @@ TEST_F(Lead1Corrupt, TruncatedPageEndsInsideAValue) {
 
 TEST_F(Lead1Corrupt, LeftOverBytesAndNonZeroPadding) {
   const Lead1Decoder d(code);
-  EXPECT_NE(errorOf(d, page + std::string(2, '\0'), deltas.size()).find("2 bytes left over after the last value"), std::string::npos);
+  EXPECT_NE(errorOf(d, page + std::string(2, '\0'), deltas.size()).find("2 bytes left over after the last value"),
+            std::string::npos);
   std::vector<std::int32_t> shorter(deltas.begin(), deltas.end() - 1);
   // Decoding fewer values than the page holds leaves bits over as well.
   EXPECT_NE(errorOf(d, page, shorter.size()), "");
@@ -113,7 +114,8 @@ TEST_F(Lead1Corrupt, LeftOverBytesAndNonZeroPadding) {
 TEST_F(Lead1Corrupt, ACodeThatIsNotPrefixFreeIsRefused) {
   Lead1Code bad = code;
   for (int s = 0; s < 9; ++s) bad.lengths[static_cast<std::size_t>(s)] = 1;  // nine 1-bit codes in context 0
-  EXPECT_NE(lead1CodeProblem(bad).find("context 0: the code lengths are not those of a prefix-free code"), std::string::npos);
+  EXPECT_NE(lead1CodeProblem(bad).find("context 0: the code lengths are not those of a prefix-free code"),
+            std::string::npos);
   EXPECT_THROW(Lead1Decoder{bad}, std::invalid_argument);
 }
 

@@ -26,7 +26,8 @@ Volume<std::uint16_t> smooth(const Dims3& d, int bits) {
   for (int z = 0; z < d[2]; ++z)
     for (int y = 0; y < d[1]; ++y)
       for (int x = 0; x < d[0]; ++x)
-        v.at(x, y, z) = static_cast<std::uint16_t>(top * (0.5 + 0.5 * std::sin(0.21 * x + 0.13 * y * y / (1.0 + y) - 0.17 * z)));
+        v.at(x, y, z) =
+            static_cast<std::uint16_t>(top * (0.5 + 0.5 * std::sin(0.21 * x + 0.13 * y * y / (1.0 + y) - 0.17 * z)));
   return v;
 }
 
@@ -104,7 +105,8 @@ TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
     LebReader reader(s, 1 << 16);
     std::mt19937 rng(9);
     for (int i = 0; i < 3000; ++i) {
-      const int x = static_cast<int>(rng() % static_cast<unsigned>(dims[0])), y = static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
+      const int x = static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
+                y = static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
                 z = static_cast<int>(rng() % static_cast<unsigned>(dims[2]));
       ASSERT_EQ(reader.sample({x, y, z}), v.at(x, y, z));
       const auto gr = reader.gradient({x, y, z});
@@ -119,7 +121,8 @@ TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
     const HzOrder order(s->grid);
     for (std::uint64_t page = 0; page < s->pageCount(); page += 7) {
       const auto values = reader.reconstructPage(LebChannelKind::Data, page);
-      for (std::uint64_t i = 0; i < (std::uint64_t{1} << s->pageBits) && (page << s->pageBits) + i < order.size(); ++i) {
+      for (std::uint64_t i = 0; i < (std::uint64_t{1} << s->pageBits) && (page << s->pageBits) + i < order.size();
+           ++i) {
         const GridPoint p = order.point((page << s->pageBits) + i);
         if (p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2]) {
           ASSERT_EQ(values[static_cast<std::size_t>(i)], v.at(p[0], p[1], p[2]));
@@ -160,8 +163,11 @@ class LebCorrupt : public ::testing::Test {
       const std::size_t pages = c.pageCrc.size();
       const std::size_t crcs = c.descriptorOffset + c.descriptorBytes - 4 - 4 * pages;
       for (std::size_t p = 0; p < pages; ++p)
-        put32(b, crcs + 4 * p, crc32(std::string_view(b).substr(c.payloadOffset + c.pageOffset[p], c.pageOffset[p + 1] - c.pageOffset[p])));
-      put32(b, c.descriptorOffset + c.descriptorBytes - 4, crc32(std::string_view(b).substr(c.descriptorOffset, c.descriptorBytes - 4)));
+        put32(b, crcs + 4 * p,
+              crc32(std::string_view(b).substr(c.payloadOffset + c.pageOffset[p],
+                                               c.pageOffset[p + 1] - c.pageOffset[p])));
+      put32(b, c.descriptorOffset + c.descriptorBytes - 4,
+            crc32(std::string_view(b).substr(c.descriptorOffset, c.descriptorBytes - 4)));
     }
   }
   static std::string errorOf(std::string b) {
@@ -183,8 +189,9 @@ TEST_F(LebCorrupt, TheIntactStreamDecodes) { EXPECT_EQ(errorOf(bytes), ""); }
 
 TEST_F(LebCorrupt, NotAStreamAndTruncated) {
   EXPECT_EQ(errorOf("JUNK" + bytes.substr(4)), "offset 0: magic: expected 'VXLB' (not an LEB stream)");
-  EXPECT_NE(errorOf(bytes.substr(0, bytes.size() - 1)).find("total_bytes: the header describes " + std::to_string(bytes.size()) + " bytes, the stream has " +
-                                                             std::to_string(bytes.size() - 1) + " (truncated)"),
+  EXPECT_NE(errorOf(bytes.substr(0, bytes.size() - 1))
+                .find("total_bytes: the header describes " + std::to_string(bytes.size()) + " bytes, the stream has " +
+                      std::to_string(bytes.size() - 1) + " (truncated)"),
             std::string::npos);
   EXPECT_NE(errorOf(bytes.substr(0, 20)).find("the stream ends after"), std::string::npos);
 }
@@ -215,11 +222,13 @@ TEST_F(LebCorrupt, HugeClaimedSizesAreRefusedBeforeAllocating) {
   std::string b = bytes;
   put64(b, 24, terabyte);
   put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
-  EXPECT_EQ(errorOf(b), "offset 24: total_bytes: the header describes 1099511627776 bytes, the stream has " + std::to_string(b.size()) + " (truncated)");
+  EXPECT_EQ(errorOf(b), "offset 24: total_bytes: the header describes 1099511627776 bytes, the stream has " +
+                            std::to_string(b.size()) + " (truncated)");
   // payload_bytes of 2^40 in the data channel's descriptor (offset 36 + 8).
   b = bytes;
   put64(b, 44, terabyte);
-  EXPECT_EQ(errorOf(b), "offset 44: payload_bytes: 1099511627776, but the pages add up to " + std::to_string(layout.channels[0].payloadBytes()));
+  EXPECT_EQ(errorOf(b), "offset 44: payload_bytes: 1099511627776, but the pages add up to " +
+                            std::to_string(layout.channels[0].payloadBytes()));
   // The largest grid, 1025^3, in pages of 2^4: 67305665 pages, a page table of 8 bytes each (and
   // the descriptor CRC) that the stream cannot hold; the table starts after the 9 x 9 code lengths.
   b = bytes;
@@ -230,7 +239,8 @@ TEST_F(LebCorrupt, HugeClaimedSizesAreRefusedBeforeAllocating) {
   b[20] = 4;
   put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
   put32(b, 40, 67305665);
-  EXPECT_EQ(errorOf(b), "offset 133: page table: expected 538445324 bytes, the stream ends after " + std::to_string(b.size() - 133));
+  EXPECT_EQ(errorOf(b), "offset 133: page table: expected 538445324 bytes, the stream ends after " +
+                            std::to_string(b.size() - 133));
 }
 
 // The contract of leb_codec.h: what decodeLeb allocates is known from the header. A thin volume
@@ -259,7 +269,7 @@ TEST(LebEncodeMemory, TheBoundFollowsTheCoveringGridOfTheLargestChannel) {
   EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025);
   EXPECT_LE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025 + 8 * 1025 + 2 * 64 * pages1025);
   EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}), 3 * grid1025 + 3 * 1025);  // the gradients' grid and the gradients
-  EXPECT_LT(lebEncodeMemoryBytes({9, 9, 9}), std::uint64_t{1} << 20);     // a 9^3 grid: two bricks per axis
+  EXPECT_LT(lebEncodeMemoryBytes({9, 9, 9}), std::uint64_t{1} << 20);      // a 9^3 grid: two bricks per axis
   EXPECT_THROW(lebEncodeMemoryBytes({9, 9, 9}, LebEncodeOptions{30, true, 0}), std::invalid_argument);  // page bits
   EXPECT_THROW(lebEncodeMemoryBytes({0, 9, 9}), std::invalid_argument);
 }
@@ -277,7 +287,9 @@ TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {
     parseLebStream(b);
     FAIL();
   } catch (const StreamError& e) {
-    EXPECT_NE(std::string(e.what()).find("cannot hold the 125 deltas of a 5x5x5 volume (at least one bit each)"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("cannot hold the 125 deltas of a 5x5x5 volume (at least one bit each)"),
+              std::string::npos)
+        << e.what();
   }
 }
 
@@ -296,7 +308,8 @@ TEST_F(LebCorrupt, ACodeTableThatIsNotPrefixFree) {
   for (std::size_t s = 0; s < 9; ++s) b[tableAt(c) + s] = 1;
   fixCrcs(b);
   const std::string e = errorOf(b);
-  EXPECT_NE(e.find("code lengths: context 0: the code lengths are not those of a prefix-free code"), std::string::npos) << e;
+  EXPECT_NE(e.find("code lengths: context 0: the code lengths are not those of a prefix-free code"), std::string::npos)
+      << e;
 }
 
 TEST_F(LebCorrupt, ASymbolPastTheTable) {

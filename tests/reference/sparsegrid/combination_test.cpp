@@ -14,7 +14,8 @@ TEST(CombinationGridShapes, CountsMatchEquation13AndTable2) {
   // Table 2: 31, 46, 64, 85, 109, 136, 166 grids for levels 5..11.
   const int paper[] = {31, 46, 64, 85, 109, 136, 166};
   for (int n = 5; n <= 11; ++n) EXPECT_EQ(combinationGridShapes(n).size(), static_cast<std::size_t>(paper[n - 5]));
-  for (int n = 1; n <= 12; ++n) EXPECT_EQ(combinationGridShapes(n).size(), static_cast<std::size_t>(3 * n * (n - 1) / 2 + 1));
+  for (int n = 1; n <= 12; ++n)
+    EXPECT_EQ(combinationGridShapes(n).size(), static_cast<std::size_t>(3 * n * (n - 1) / 2 + 1));
 }
 
 TEST(CombinationGridShapes, PositiveCountIsNinetyOneAtLevelTen) {
@@ -88,7 +89,8 @@ TEST(Trilinear, ValueAloneIsBitIdenticalToValueWithGradient) {
   std::uniform_real_distribution<double> coord(0.0, 1.0);
   for (int t = 0; t < 500; ++t) {
     const glm::dvec3 p{coord(rng), coord(rng), coord(rng)};
-    for (const ComponentGrid& g : c.grids()) ASSERT_EQ(trilinearValue(g.values, g.levels, p), trilinear(g.values, g.levels, p).value);
+    for (const ComponentGrid& g : c.grids())
+      ASSERT_EQ(trilinearValue(g.values, g.levels, p), trilinear(g.values, g.levels, p).value);
     ASSERT_EQ(c.value(p), c.valueGradient(p).value);
   }
 }

@@ -12,7 +12,8 @@ namespace {
 
 TEST(CombinationTextures, ScaledTexelsHoldFactorTimesDataOverNPlus) {
   const Combination c(SparseGrid::fromField({3, true}, analyticField("gaussian_blobs")));
-  const CombinationTextures t = buildCombinationTextures(c, {TexelFormat::R32F, TextureSizing::Padded, ScalingPolicy::Scaled});
+  const CombinationTextures t =
+      buildCombinationTextures(c, {TexelFormat::R32F, TextureSizing::Padded, ScalingPolicy::Scaled});
   ASSERT_EQ(t.textures.size(), c.grids().size());
   EXPECT_EQ(t.positiveCount, 6 + 1);  // |l| = 5 with l_d >= 1: C(4,2) = 6 grids; |l| = 3: 1
   EXPECT_EQ(t.readbackScale, t.positiveCount);

@@ -16,7 +16,7 @@ TEST(HatTerms, RightSidedSlopeConvention) {
   ASSERT_EQ(atNode.count, 1);
   EXPECT_EQ(atNode.terms[0].index, 0);
   EXPECT_EQ(atNode.terms[0].value, 1.0);
-  EXPECT_EQ(atNode.terms[0].slope, -4.0);  // right of the kink
+  EXPECT_EQ(atNode.terms[0].slope, -4.0);      // right of the kink
   const HatTerms atHalf = hatTermsAt(2, 0.5);  // left end of hat 1's support
   EXPECT_EQ(atHalf.terms[0].index, 1);
   EXPECT_EQ(atHalf.terms[0].value, 0.0);

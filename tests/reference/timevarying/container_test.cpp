@@ -32,13 +32,14 @@ std::string errorOf(std::string_view bytes) {
 
 // Rewrites the trailing CRC so that a deliberately changed field is what the parser meets.
 void fixCrc(std::string& b) {
-  const uLong c = crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(b.data()), static_cast<uInt>(b.size() - 4));
+  const uLong c =
+      crc32(crc32(0L, Z_NULL, 0), reinterpret_cast<const Bytef*>(b.data()), static_cast<uInt>(b.size() - 4));
   for (int i = 0; i < 4; ++i) b[b.size() - 4 + i] = static_cast<char>((c >> (8 * i)) & 0xff);
 }
 
 TEST(TimeVaryingContainer, RoundTripsEveryEncoding) {
-  for (ref::IndexEncoding e : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16, ref::IndexEncoding::NormalizedFloat,
-                               ref::IndexEncoding::BlockRgba8}) {
+  for (ref::IndexEncoding e : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16,
+                               ref::IndexEncoding::NormalizedFloat, ref::IndexEncoding::BlockRgba8}) {
     const TimeVaryingFile f = sampleFile(e);
     const TimeVaryingFile g = parseTimeVarying(serializeTimeVarying(f));
     EXPECT_EQ(g.textures.index.texels, f.textures.index.texels);
@@ -89,11 +90,12 @@ TEST(TimeVaryingContainer, EveryFileTheEncoderWritesReadsBackExactly) {
   std::size_t files = 0;
   for (const auto& [name, series] : roundTripSeries(side))
     for (const char* tfName : {"gray", "opaque", "plume"})
-      for (ref::IndexEncoding e : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16, ref::IndexEncoding::NormalizedFloat,
-                                   ref::IndexEncoding::BlockRgba8})
+      for (ref::IndexEncoding e : {ref::IndexEncoding::NormalizedRgba8, ref::IndexEncoding::NormalizedRgba16,
+                                   ref::IndexEncoding::NormalizedFloat, ref::IndexEncoding::BlockRgba8})
         for (ref::AlphaOnePolicy policy : {ref::AlphaOnePolicy::Paper, ref::AlphaOnePolicy::Refine})
           for (int level = 1; level <= 3; ++level) {
-            const std::string what = name + " " + tfName + " " + std::string(ref::name(e)) + " level " + std::to_string(level) +
+            const std::string what = name + " " + tfName + " " + std::string(ref::name(e)) + " level " +
+                                     std::to_string(level) +
                                      (policy == ref::AlphaOnePolicy::Paper ? " paper" : " refine");
             TimeVaryingFile f;
             f.transfer = ref::transferFunction(tfName);
@@ -120,7 +122,8 @@ TEST(TimeVaryingContainer, EveryFileTheEncoderWritesReadsBackExactly) {
               }
               for (std::size_t i = 0; i < want.size(); ++i)
                 if (want[i][3] != 255 && decoded[i] != want[i]) {
-                  ADD_FAILURE() << what << ": voxel " << i << " of step " << t << " has no alpha-one colour and decodes wrongly";
+                  ADD_FAILURE() << what << ": voxel " << i << " of step " << t
+                                << " has no alpha-one colour and decodes wrongly";
                   break;
                 }
             }
@@ -138,7 +141,8 @@ TEST(TimeVaryingContainer, TheFlagCollisionOfAConstantOpaqueVolumeDecodesAsThePa
   TimeVaryingFile f;
   f.transfer = ref::transferFunction("gray");
   ASSERT_EQ(f.transfer(255), (ref::Rgba8{255, 255, 255, 255}));
-  f.textures = ref::encodeTimeVarying(s, f.transfer, {1, ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Paper});
+  f.textures =
+      ref::encodeTimeVarying(s, f.transfer, {1, ref::IndexEncoding::NormalizedRgba8, ref::AlphaOnePolicy::Paper});
   const TimeVaryingFile g = parseTimeVarying(serializeTimeVarying(f));
   EXPECT_EQ(g.textures.stats.distinctBlocks, 0u);
   for (const ref::Rgba8& c : ref::decodeStep(g.textures, 0)) ASSERT_EQ(c, (ref::Rgba8{0, 0, 0, 0}));
@@ -156,7 +160,8 @@ TEST(TimeVaryingContainer, MoreTimeStepsThanTheFormatHoldsAreRefusedWhenWriting)
     (void)serializeTimeVarying(f);
     ADD_FAILURE() << "65537 time steps were serialized";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("65537 time steps: the .vxtv container holds 1..65536"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("65537 time steps: the .vxtv container holds 1..65536"), std::string::npos)
+        << e.what();
   }
 }
 
@@ -174,14 +179,16 @@ TEST(TimeVaryingContainer, AutoLevelWritesTheSmallestFile) {
         if (bytes < smallest) smallest = bytes, smallestLevel = level;
       }
       f.textures = ref::encodeTimeVaryingAutoLevel(series, f.transfer, {});
-      EXPECT_EQ(serializeTimeVarying(f).size(), smallest) << name << " " << tfName << ": auto chose level " << f.textures.layout.level
-                                                          << ", level " << smallestLevel << " is smallest";
+      EXPECT_EQ(serializeTimeVarying(f).size(), smallest)
+          << name << " " << tfName << ": auto chose level " << f.textures.layout.level << ", level " << smallestLevel
+          << " is smallest";
     }
 }
 
 TEST(TimeVaryingContainer, TruncatedFilesNameTheOffset) {
   const std::string b = serializeTimeVarying(sampleFile());
-  for (std::size_t n : {std::size_t{0}, std::size_t{3}, std::size_t{50}, std::size_t{96}, std::size_t{200}, b.size() / 2, b.size() - 1}) {
+  for (std::size_t n : {std::size_t{0}, std::size_t{3}, std::size_t{50}, std::size_t{96}, std::size_t{200},
+                        b.size() / 2, b.size() - 1}) {
     const std::string e = errorOf(std::string_view(b).substr(0, n));
     EXPECT_NE(e.find("offset "), std::string::npos) << n << ": " << e;
   }
@@ -237,7 +244,8 @@ TEST(TimeVaryingContainer, AHeaderWhoseFieldsAgreeClaimingTerabytesIsRefusedByTh
   put(56, std::uint64_t{65536} * 128 * 128 * 128, 8);
   put(64, 0, 8);
   const std::size_t texturesAt = 96 + 1 + 5 + 1024;  // the header, the transfer function "plume" and its table
-  const std::uint64_t claimed = texturesAt + std::uint64_t{8192} * 8192 * 8192 * 4 + std::uint64_t{16384} * 16384 * 16384 * 4 + 4;
+  const std::uint64_t claimed =
+      texturesAt + std::uint64_t{8192} * 8192 * 8192 * 4 + std::uint64_t{16384} * 16384 * 16384 * 4 + 4;
   EXPECT_EQ(errorOf(b), "offset " + std::to_string(texturesAt) + ": the header describes " + std::to_string(claimed) +
                             " bytes in all, the file has " + std::to_string(b.size()) + " (truncated)");
 }
@@ -251,7 +259,8 @@ TEST(TimeVaryingContainer, AnAddressOutsideTheStoredBlocksIsRejected) {
   while (!ref::isRefinementFlag(f.textures.index.encoding, &f.textures.index.texels[4 * texel])) ++texel;
   for (int a = 0; a < 3; ++a) b[indexAt + 4 * texel + a] = static_cast<char>(255);
   fixCrc(b);
-  EXPECT_NE(errorOf(b).find("is not one of the " + std::to_string(f.textures.stats.distinctBlocks) + " blocks"), std::string::npos)
+  EXPECT_NE(errorOf(b).find("is not one of the " + std::to_string(f.textures.stats.distinctBlocks) + " blocks"),
+            std::string::npos)
       << errorOf(b);
 }
 

@@ -11,8 +11,8 @@
 namespace voxref::ref {
 namespace {
 
-const IndexEncoding kEncodings[] = {IndexEncoding::NormalizedRgba8, IndexEncoding::NormalizedRgba16, IndexEncoding::NormalizedFloat,
-                                    IndexEncoding::BlockRgba8};
+const IndexEncoding kEncodings[] = {IndexEncoding::NormalizedRgba8, IndexEncoding::NormalizedRgba16,
+                                    IndexEncoding::NormalizedFloat, IndexEncoding::BlockRgba8};
 
 // The input after the transfer function, voxel by voxel: what the decoder must reproduce.
 std::vector<Rgba8> expected(const TimeSeries& s, const TransferFunction& tf, int t) {
@@ -20,13 +20,16 @@ std::vector<Rgba8> expected(const TimeSeries& s, const TransferFunction& tf, int
   const auto& v = s.steps[static_cast<std::size_t>(t)];
   for (int z = 0; z < s.original[2]; ++z)
     for (int y = 0; y < s.original[1]; ++y)
-      for (int x = 0; x < s.original[0]; ++x) out.push_back(tf(v[static_cast<std::size_t>(x) + static_cast<std::size_t>(s.side) * (y + static_cast<std::size_t>(s.side) * z)]));
+      for (int x = 0; x < s.original[0]; ++x)
+        out.push_back(tf(v[static_cast<std::size_t>(x) +
+                           static_cast<std::size_t>(s.side) * (y + static_cast<std::size_t>(s.side) * z)]));
   return out;
 }
 
 void expectLossless(const TimeSeries& s, const TransferFunction& tf, const TimeVaryingOptions& o) {
   const TimeVaryingTextures tex = encodeTimeVarying(s, tf, o);
-  for (int t = 0; t < static_cast<int>(s.steps.size()); ++t) ASSERT_EQ(decodeStep(tex, t), expected(s, tf, t)) << "step " << t << " level " << o.level;
+  for (int t = 0; t < static_cast<int>(s.steps.size()); ++t)
+    ASSERT_EQ(decodeStep(tex, t), expected(s, tf, t)) << "step " << t << " level " << o.level;
 }
 
 TEST(TimeVaryingCodec, RoundTripIsLosslessOnEveryStepLevelAndEncoding) {
@@ -42,7 +45,7 @@ TEST(TimeVaryingCodec, StatisticsAddUp) {
   const EncodeStats& st = tex.stats;
   EXPECT_EQ(st.homogeneousCells + st.refinedCells, 10u * 4 * 4 * 4);
   EXPECT_EQ(st.hashHits + st.distinctBlocks, st.refinedCells);  // every refined cell is a new block or a shared one
-  EXPECT_EQ(st.indexBytes, 10u * 4 * 4 * 4 * 4);                  // T n^3 RGBA8 texels, as the paper counts
+  EXPECT_EQ(st.indexBytes, 10u * 4 * 4 * 4 * 4);                // T n^3 RGBA8 texels, as the paper counts
   EXPECT_EQ(st.refinementBytes, st.distinctBlocks * 8 * 8 * 8 * 4);
   EXPECT_EQ(st.ratioAgainst4Bytes(), 4.0 * 10 * 32 * 32 * 32 / double(st.indexBytes + st.refinementBytes));
   EXPECT_EQ(tex.layout.indexSlots, 4);  // smallest power of two with S^3 >= 10
@@ -71,7 +74,8 @@ TEST(TimeVaryingCodec, FlagCollisionBreaksThePaperPolicyOnly) {
   s.steps[0][15 + 16 * (15 + 16 * 15)] = 7;  // one refined cell, so that a refinement texture exists
   const TransferFunction tf = transferFunction("opaque");
   ASSERT_EQ(tf(230)[3], 255);
-  const TimeVaryingTextures paper = encodeTimeVarying(s, tf, {1, IndexEncoding::NormalizedRgba8, AlphaOnePolicy::Paper});
+  const TimeVaryingTextures paper =
+      encodeTimeVarying(s, tf, {1, IndexEncoding::NormalizedRgba8, AlphaOnePolicy::Paper});
   EXPECT_EQ(paper.stats.alphaOneCells, 1u);
   bool wrong = false;
   try {
@@ -120,7 +124,8 @@ TEST(TimeVaryingCodec, CapacityExceededIsAClearError) {
     EXPECT_NE(std::string(e.what()).find("texels per axis"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("the limit is 8"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(encodeTimeVarying(plume, transferFunction("plume"), {5}), std::invalid_argument);  // blocks of one voxel: level > log2(32) - 1
+  EXPECT_THROW(encodeTimeVarying(plume, transferFunction("plume"), {5}),
+               std::invalid_argument);  // blocks of one voxel: level > log2(32) - 1
   EXPECT_THROW(encodeTimeVarying(plume, transferFunction("plume"), {0}), std::invalid_argument);
 }
 
@@ -150,7 +155,8 @@ TEST(TimeVaryingCodec, AutoLevelStoresTheFewestTextureBytes) {
   const auto best = encodeTimeVaryingAutoLevel(plume, transferFunction("plume"), {});
   for (int level = 1; level <= 3; ++level) {
     const auto t = encodeTimeVarying(plume, transferFunction("plume"), {level});
-    EXPECT_LE(best.stats.indexBytesAllocated + best.stats.refinementBytesAllocated, t.stats.indexBytesAllocated + t.stats.refinementBytesAllocated);
+    EXPECT_LE(best.stats.indexBytesAllocated + best.stats.refinementBytesAllocated,
+              t.stats.indexBytesAllocated + t.stats.refinementBytesAllocated);
   }
 }
 

@@ -12,7 +12,8 @@
 namespace voxref::conf::isolation {
 namespace {
 
-std::map<std::size_t, ChildOutcome> runAll(std::size_t n, PoolOptions options, const std::function<std::string(std::size_t)>& task) {
+std::map<std::size_t, ChildOutcome> runAll(std::size_t n, PoolOptions options,
+                                           const std::function<std::string(std::size_t)>& task) {
   std::map<std::size_t, ChildOutcome> outcomes;
   EXPECT_TRUE(runEachInChild(n, options, task, [&](std::size_t i, const ChildOutcome& o) {
     EXPECT_FALSE(outcomes.count(i)) << "reported twice: " << i;
@@ -28,12 +29,19 @@ TEST(ChildProcesses, EveryWayOfEndingIsTold) {
   const auto o = runAll(6, options, [](std::size_t i) -> std::string {
     std::fprintf(stderr, "task %zu says hello\n", i);
     switch (i) {
-      case 0: return "result of 0";
-      case 1: std::raise(SIGSEGV); break;
-      case 2: std::abort();
-      case 3: std::exit(7);
-      case 4: for (;;) pause();
-      case 5: throw std::runtime_error("thrown");
+      case 0:
+        return "result of 0";
+      case 1:
+        std::raise(SIGSEGV);
+        break;
+      case 2:
+        std::abort();
+      case 3:
+        std::exit(7);
+      case 4:
+        for (;;) pause();
+      case 5:
+        throw std::runtime_error("thrown");
     }
     return "unreachable";
   });
@@ -74,7 +82,8 @@ TEST(ChildProcesses, LargeResultsAndOutputCrossIntact) {
     EXPECT_EQ(outcome.result, std::string(1 << 20, static_cast<char>('a' + i)));
     EXPECT_TRUE(outcome.outputTruncated);
     EXPECT_LE(outcome.output.size(), kKeptOutputBytes);
-    EXPECT_NE(outcome.output.find("output line 19999 of task " + std::to_string(i)), std::string::npos);  // the tail is kept
+    EXPECT_NE(outcome.output.find("output line 19999 of task " + std::to_string(i)),
+              std::string::npos);  // the tail is kept
   }
 }
 

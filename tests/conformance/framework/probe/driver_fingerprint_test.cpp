@@ -33,11 +33,13 @@ std::map<std::string, std::string> expectedValues(const emu::PrecisionProfile& p
       {"sampling.unorm8.lerp_rounding", aos ? "nearest" : "float"},
       {"sampling.float.subtexel_bits", "float"},
       {"sampling.float.lerp", p.floatLerp == emu::LerpArithmetic::Fused ? "fused" : "unfused"},
-      {"sampling.float.repeat_scaling", p.sampler == emu::SamplerFamily::Llvmpipe ? "fract_then_scale" : "scale_then_floor"},
+      {"sampling.float.repeat_scaling",
+       p.sampler == emu::SamplerFamily::Llvmpipe ? "fract_then_scale" : "scale_then_floor"},
       {"sampling.float.denormals", p.flushDenormals ? "flushed" : "kept"},
       {"store.unorm8_rounding", "half_even"},
       {"store.unorm16_rounding", p.unorm16Store == emu::UnormRounding::HalfEven ? "half_even" : "half_up"},
-      {"framebuffer.between_passes", p.framebuffer == emu::FramebufferModel::QuantizePerPass ? "requantized" : "float_tile_cache"},
+      {"framebuffer.between_passes",
+       p.framebuffer == emu::FramebufferModel::QuantizePerPass ? "requantized" : "float_tile_cache"},
       {"blend.rgba8_src_alpha", p.framebuffer == emu::FramebufferModel::QuantizePerPass ? "mulnorm" : "float"},
   };
 }
@@ -47,7 +49,8 @@ TEST(DriverFingerprint, RecoversEveryKnownProfilesParametersFromItsEmulatedFrame
     const DriverFingerprint fp = inferFingerprint(design(), emu::emulateProbeFrames(design(), p));
     const auto expected = expectedValues(p);
     ASSERT_EQ(fp.properties.size(), expected.size()) << p.name;
-    for (const auto& [id, value] : expected) EXPECT_EQ(valueOf(fp, id), value) << p.name << " " << id << ": " << fp.find(id)->evidence;
+    for (const auto& [id, value] : expected)
+      EXPECT_EQ(valueOf(fp, id), value) << p.name << " " << id << ": " << fp.find(id)->evidence;
     for (const InferredProperty& prop : fp.properties) EXPECT_FALSE(prop.evidence.empty()) << prop.id;
   }
 }
@@ -60,12 +63,14 @@ TEST(DriverFingerprint, EveryKnownProfileMatchesItselfAlone) {
       EXPECT_EQ(c.matches(), c.profile == &p) << p.name << " against " << c.profile->name;
       EXPECT_EQ(c.framesIdentical, c.profile == &p) << p.name << " against " << c.profile->name;
     }
-    EXPECT_EQ(verdictLine(comparisons).rfind("profile: " + std::string(p.name) + " (every property", 0), 0u) << verdictLine(comparisons);
+    EXPECT_EQ(verdictLine(comparisons).rfind("profile: " + std::string(p.name) + " (every property", 0), 0u)
+        << verdictLine(comparisons);
   }
 }
 
 TEST(DriverFingerprint, EvidenceNamesTheCounts) {
-  const DriverFingerprint fp = inferFingerprint(design(), emu::emulateProbeFrames(design(), *emu::findProfile("llvmpipe")));
+  const DriverFingerprint fp =
+      inferFingerprint(design(), emu::emulateProbeFrames(design(), *emu::findProfile("llvmpipe")));
   EXPECT_NE(fp.find("sampling.unorm8.subtexel_bits")->evidence.find("changes 256 times"), std::string::npos);
   EXPECT_NE(fp.find("sampling.float.repeat_scaling")->evidence.find("multiples of 2^-21"), std::string::npos);
 }
@@ -82,7 +87,9 @@ TEST(DriverFingerprint, AnUnknownCombinationMatchesNoProfileAndSaysWhy) {
   for (const ProfileComparison& c : comparisons) EXPECT_FALSE(c.matches()) << c.profile->name;
   const std::string verdict = verdictLine(comparisons);
   EXPECT_EQ(verdict.rfind("no known profile matches: closest llvmpipe differs in ", 0), 0u) << verdict;
-  EXPECT_NE(verdict.find("framebuffer.between_passes: measured float_tile_cache, profile requantized"), std::string::npos) << verdict;
+  EXPECT_NE(verdict.find("framebuffer.between_passes: measured float_tile_cache, profile requantized"),
+            std::string::npos)
+      << verdict;
 }
 
 // The unorm8 sweep of a fixed-point sampler without SSSE3 (docs/precision.md: the driver then
@@ -98,13 +105,16 @@ TEST(DriverFingerprint, RecognisesFlooredCoordinatesAndTruncatingLerps) {
     const int i0 = std::min(s >> 8, 1), w = i0 == 1 ? 0 : s & 255;
     for (int c = 0; c < 4; ++c) {
       const int a = static_cast<int>(sweep.texelCodes[i0][c]), b = static_cast<int>(sweep.texelCodes[1][c]);
-      f.codes[k][c] = std::bit_cast<std::uint32_t>(emu::unormToFloat(static_cast<std::uint32_t>(a + ((w * (b - a)) >> 8)), 8));
+      f.codes[k][c] =
+          std::bit_cast<std::uint32_t>(emu::unormToFloat(static_cast<std::uint32_t>(a + ((w * (b - a)) >> 8)), 8));
     }
   }
   const DriverFingerprint fp = inferFingerprint(design(), frames);
   EXPECT_EQ(valueOf(fp, "sampling.unorm8.subtexel_bits"), "8");
-  EXPECT_EQ(valueOf(fp, "sampling.unorm8.coordinate_rounding"), "floor") << fp.find("sampling.unorm8.coordinate_rounding")->evidence;
-  EXPECT_EQ(valueOf(fp, "sampling.unorm8.lerp_rounding"), "floor") << fp.find("sampling.unorm8.lerp_rounding")->evidence;
+  EXPECT_EQ(valueOf(fp, "sampling.unorm8.coordinate_rounding"), "floor")
+      << fp.find("sampling.unorm8.coordinate_rounding")->evidence;
+  EXPECT_EQ(valueOf(fp, "sampling.unorm8.lerp_rounding"), "floor")
+      << fp.find("sampling.unorm8.lerp_rounding")->evidence;
 }
 
 TEST(DriverFingerprint, GarbageBitsGiveUnknownValuesNotACrash) {

@@ -11,19 +11,22 @@ CaseResult result(const std::string& id, Status status, int mismatched) {
   CaseResult r;
   r.id = id;
   r.status = status;
-  r.oracles = {{"exact", status == Status::Fail ? Verdict::Fail : Verdict::Pass, "", {{"mismatched_pixels", mismatched}, {"note", "text"}}}};
+  r.oracles = {{"exact",
+                status == Status::Fail ? Verdict::Fail : Verdict::Pass,
+                "",
+                {{"mismatched_pixels", mismatched}, {"note", "text"}}}};
   return r;
 }
 
 TEST(BaselineDiff, SortsEveryKindOfChange) {
-  const std::vector<CaseResult> before = {result("a.same", Status::Pass, 0),    result("b.breaks", Status::Pass, 0),
-                                          result("c.fixed", Status::Fail, 12),  result("d.moves", Status::Fail, 3),
-                                          result("e.warns", Status::Pass, 0),   result("f.skips", Status::Pass, 0),
-                                          result("g.gone", Status::Pass, 0),    result("h.crash", Status::Crash, 0)};
-  const std::vector<CaseResult> after = {result("a.same", Status::Pass, 0),   result("b.breaks", Status::Fail, 5),
-                                         result("c.fixed", Status::Pass, 0),  result("d.moves", Status::Fail, 4),
-                                         result("e.warns", Status::Warn, 0),  result("f.skips", Status::Skip, 0),
-                                         result("n.new", Status::Pass, 0),    result("h.crash", Status::Timeout, 0)};
+  const std::vector<CaseResult> before = {result("a.same", Status::Pass, 0),   result("b.breaks", Status::Pass, 0),
+                                          result("c.fixed", Status::Fail, 12), result("d.moves", Status::Fail, 3),
+                                          result("e.warns", Status::Pass, 0),  result("f.skips", Status::Pass, 0),
+                                          result("g.gone", Status::Pass, 0),   result("h.crash", Status::Crash, 0)};
+  const std::vector<CaseResult> after = {result("a.same", Status::Pass, 0),  result("b.breaks", Status::Fail, 5),
+                                         result("c.fixed", Status::Pass, 0), result("d.moves", Status::Fail, 4),
+                                         result("e.warns", Status::Warn, 0), result("f.skips", Status::Skip, 0),
+                                         result("n.new", Status::Pass, 0),   result("h.crash", Status::Timeout, 0)};
   const BaselineDiff d = compareWithBaseline(before, after);
   EXPECT_TRUE(d.regressed());
   EXPECT_EQ(d.compared, 7u);
@@ -50,14 +53,16 @@ TEST(BaselineDiff, SortsEveryKindOfChange) {
   EXPECT_EQ(j["newly_failing"][0]["figures_moved"][0]["after"], 5);
   std::ostringstream text;
   printBaselineDiff(text, d, "old/results.json");
-  EXPECT_NE(text.str().find("REGRESSED  b.breaks: pass -> fail; exact.mismatched_pixels 0 -> 5"), std::string::npos) << text.str();
+  EXPECT_NE(text.str().find("REGRESSED  b.breaks: pass -> fail; exact.mismatched_pixels 0 -> 5"), std::string::npos)
+      << text.str();
 }
 
 TEST(BaselineDiff, IdenticalRunsShowNothing) {
   const std::vector<CaseResult> run = {result("a", Status::Pass, 0), result("b", Status::Fail, 2)};
   const BaselineDiff d = compareWithBaseline(run, run);
   EXPECT_FALSE(d.regressed());
-  EXPECT_TRUE(d.fixed.empty() && d.otherStatus.empty() && d.figuresMoved.empty() && d.added.empty() && d.missing.empty());
+  EXPECT_TRUE(d.fixed.empty() && d.otherStatus.empty() && d.figuresMoved.empty() && d.added.empty() &&
+              d.missing.empty());
   EXPECT_EQ(d.compared, 2u);
 }
 

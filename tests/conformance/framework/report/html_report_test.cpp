@@ -1,14 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
-#include <unistd.h>
 
-#include "conformance/io/atomic_file.h"
 #include "conformance/framework/report/html_case_page.h"
 #include "conformance/framework/report/html_escape.h"
 #include "conformance/framework/report/html_index.h"
 #include "conformance/framework/report/html_report.h"
+#include "conformance/io/atomic_file.h"
 
 namespace voxref::conf {
 namespace {
@@ -27,7 +27,10 @@ CaseResult result(std::string id, std::string system, Status s) {
   r.system = std::move(system);
   r.description = "checks <b>bold</b> & 'quotes'";
   r.status = s;
-  r.oracles = {{"exact", s == Status::Fail ? Verdict::Fail : Verdict::Pass, "0 of 10 samples differ", {{"mismatched_pixels", 0}}}};
+  r.oracles = {{"exact",
+                s == Status::Fail ? Verdict::Fail : Verdict::Pass,
+                "0 of 10 samples differ",
+                {{"mismatched_pixels", 0}}}};
   r.effects = {"output.unorm8"};
   return r;
 }
@@ -55,7 +58,7 @@ void expectWellFramed(const std::string& page) {
 TEST(HtmlEscape, EscapesMarkupControlsAndBrokenUtf8) {
   EXPECT_EQ(htmlEscape("<a href=\"x\">'&'</a>"), "&lt;a href=&quot;x&quot;&gt;&#39;&amp;&#39;&lt;/a&gt;");
   EXPECT_EQ(htmlEscape("tab\tnl\nbell\x07 del\x7f"), "tab\tnl\nbell  del ");
-  EXPECT_EQ(htmlEscape("µs → ok"), "µs → ok");                         // valid UTF-8 stays
+  EXPECT_EQ(htmlEscape("µs → ok"), "µs → ok");                                    // valid UTF-8 stays
   EXPECT_EQ(htmlEscape("bad \xff\xc3 end"), "bad \xef\xbf\xbd\xef\xbf\xbd end");  // invalid bytes become U+FFFD
   EXPECT_EQ(htmlEscape("\xed\xa0\x80"), "\xef\xbf\xbd\xef\xbf\xbd\xef\xbf\xbd");  // a surrogate is not UTF-8
 }
@@ -66,14 +69,22 @@ TEST(HtmlEscape, CasePageNamesStayInCasesAndAreSafeUrls) {
 }
 
 TEST(HtmlIndex, CountsPerStatusAndSystemFiltersAndLinks) {
-  const std::string h = htmlIndex(run(true), {result("a.one", "sparsegrid", Status::Pass), result("a.two", "sparsegrid", Status::Fail),
-                                              result("b.one", "iso", Status::Pass), result("b.two", "iso", Status::Skip)});
+  const std::string h =
+      htmlIndex(run(true), {result("a.one", "sparsegrid", Status::Pass), result("a.two", "sparsegrid", Status::Fail),
+                            result("b.one", "iso", Status::Pass), result("b.two", "iso", Status::Skip)});
   expectWellFramed(h);
-  EXPECT_TRUE(has(h, "id=\"count-pass\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"pass\">2</a>")) << h;
-  EXPECT_TRUE(has(h, "id=\"count-fail\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"fail\">1</a>"));
-  EXPECT_TRUE(has(h, "id=\"count-crash\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"crash\">0</a>"));
-  EXPECT_TRUE(has(h, "id=\"count-iso-skip\"><a href=\"#cases\" class=\"count\" data-system=\"iso\" data-status=\"skip\">1</a>"));
-  EXPECT_TRUE(has(h, "id=\"count-sparsegrid-fail\"><a href=\"#cases\" class=\"count\" data-system=\"sparsegrid\" data-status=\"fail\">1</a>"));
+  EXPECT_TRUE(
+      has(h, "id=\"count-pass\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"pass\">2</a>"))
+      << h;
+  EXPECT_TRUE(
+      has(h, "id=\"count-fail\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"fail\">1</a>"));
+  EXPECT_TRUE(
+      has(h, "id=\"count-crash\"><a href=\"#cases\" class=\"count\" data-system=\"\" data-status=\"crash\">0</a>"));
+  EXPECT_TRUE(has(
+      h, "id=\"count-iso-skip\"><a href=\"#cases\" class=\"count\" data-system=\"iso\" data-status=\"skip\">1</a>"));
+  EXPECT_TRUE(has(h,
+                  "id=\"count-sparsegrid-fail\"><a href=\"#cases\" class=\"count\" data-system=\"sparsegrid\" "
+                  "data-status=\"fail\">1</a>"));
   EXPECT_TRUE(has(h, ">4</a></th>"));  // count-cases
   EXPECT_TRUE(has(h, "<a href=\"cases/a.two.html\">"));
   EXPECT_TRUE(has(h, "<tr data-id=\"b.two\" data-status=\"skip\" data-system=\"iso\">"));
@@ -107,7 +118,9 @@ TEST(HtmlIndex, SaysWhyARunIsPartialAndWhatDidNotRun) {
   interrupted.interruptedBy = "SIGINT";
   interrupted.notRun = {"b.three", "b.<four>"};
   const std::string h = htmlIndex(interrupted, {result("a.one", "sparsegrid", Status::Pass)});
-  EXPECT_TRUE(has(h, "partial report: the run was interrupted (SIGINT); it holds only the cases that finished; 2 selected case(s) did not run."));
+  EXPECT_TRUE(has(h,
+                  "partial report: the run was interrupted (SIGINT); it holds only the cases that finished; 2 selected "
+                  "case(s) did not run."));
   EXPECT_TRUE(has(h, "<li><code>b.&lt;four&gt;</code></li>"));
   RunInfo snapshot = run(false);
   snapshot.running = true;
@@ -117,10 +130,16 @@ TEST(HtmlIndex, SaysWhyARunIsPartialAndWhatDidNotRun) {
 
 TEST(HtmlIndex, ShowsTheBaselineComparison) {
   RunInfo withBaseline = run(true);
-  withBaseline.baseline = {{"file", "old/results.json"}, {"regressed", true}, {"compared", 2},
-                           {"newly_failing", {{{"id", "a.two"}, {"before", "pass"}, {"after", "fail"},
-                                               {"figures_moved", {{{"oracle", "exact"}, {"figure", "mismatched_pixels"}, {"before", 0}, {"after", 3}}}}}}},
-                           {"added", {"a.three"}}};
+  withBaseline.baseline = {
+      {"file", "old/results.json"},
+      {"regressed", true},
+      {"compared", 2},
+      {"newly_failing",
+       {{{"id", "a.two"},
+         {"before", "pass"},
+         {"after", "fail"},
+         {"figures_moved", {{{"oracle", "exact"}, {"figure", "mismatched_pixels"}, {"before", 0}, {"after", 3}}}}}}},
+      {"added", {"a.three"}}};
   const std::string h = htmlIndex(withBaseline, {result("a.two", "sparsegrid", Status::Fail)});
   expectWellFramed(h);
   EXPECT_TRUE(has(h, "<b>regressed</b>"));
@@ -157,31 +176,43 @@ TEST(HtmlCasePage, WorstPixelsAreMagnifiedWithValuesAndIntervals) {
   r.images = {"images/c.rendered.png", "images/c.emulated.png", "images/c.reference.png", "images/c.error_mask.png"};
   r.worstPixels.push_back({12, 3, 7, "envelope", 0.25, 0.5, 0.375, std::make_pair(0.3, 0.45)});
   r.worstPixels.push_back({0, 47, 0, "exact", 1.0, std::nan(""), 1.0, std::nullopt});
-  r.oracles.push_back({"envelope", Verdict::Fail, "1 of 10 samples outside",
-                       {{"fail", 1}, {"failures", nlohmann::json::array({{{"sample", {12, 3, 7}}, {"value", 0.25}, {"allowed", {0.3, 0.45}}}})}}});
+  r.oracles.push_back(
+      {"envelope",
+       Verdict::Fail,
+       "1 of 10 samples outside",
+       {{"fail", 1},
+        {"failures", nlohmann::json::array({{{"sample", {12, 3, 7}}, {"value", 0.25}, {"allowed", {0.3, 0.45}}}})}}});
   const std::string h = htmlCasePage(run(true), r);
   expectWellFramed(h);
   EXPECT_EQ(count(h, "<tr class=\"worst-pixel\""), 2u);
   EXPECT_TRUE(has(h, "<tr class=\"worst-pixel\" data-x=\"12\" data-y=\"3\" data-k=\"7\">"));
   // GL, emulated, reference, the two differences, the interval and that GL lies outside it.
-  EXPECT_TRUE(has(h, "<td class=\"num\">0.25</td><td class=\"num\">0.5</td><td class=\"num\">0.375</td><td class=\"num\">-0.25</td>"
-                     "<td class=\"num\">-0.125</td><td>[0.3, 0.45] <span class=\"status fail\">GL outside</span>"))
+  EXPECT_TRUE(has(
+      h,
+      "<td class=\"num\">0.25</td><td class=\"num\">0.5</td><td class=\"num\">0.375</td><td class=\"num\">-0.25</td>"
+      "<td class=\"num\">-0.125</td><td>[0.3, 0.45] <span class=\"status fail\">GL outside</span>"))
       << h;
-  EXPECT_TRUE(has(h, "<td class=\"num\">1</td><td class=\"num\">—</td><td class=\"num\">1</td><td class=\"num\">—</td><td class=\"num\">0</td><td>—</td>"));
+  EXPECT_TRUE(has(h,
+                  "<td class=\"num\">1</td><td class=\"num\">—</td><td class=\"num\">1</td><td class=\"num\">—</td><td "
+                  "class=\"num\">0</td><td>—</td>"));
   // Crops: the image anchored by its bottom edge so that GL row y is the centre row (no flip needed).
-  EXPECT_TRUE(has(h, "src=\"../images/c.error_mask.png\" alt=\"error mask around the pixel\" style=\"left:-56px;bottom:16px\""));
+  EXPECT_TRUE(has(
+      h, "src=\"../images/c.error_mask.png\" alt=\"error mask around the pixel\" style=\"left:-56px;bottom:16px\""));
   EXPECT_TRUE(has(h, "src=\"../images/c.rendered.png\" alt=\"GL around the pixel\" style=\"left:40px;bottom:-336px\""));
   EXPECT_EQ(count(h, "class=\"crop\""), 8u);
   // The four images side by side, and the envelope's failures with their allowed intervals.
   EXPECT_TRUE(has(h, "<img src=\"../images/c.reference.png\" alt=\"reference (double)\">"));
-  EXPECT_TRUE(has(h, "<td>[12,3,7]</td><td class=\"num\">0.25</td><td class=\"num\">[0.3, 0.45]</td><td class=\"num\">0.05</td>"));
+  EXPECT_TRUE(has(
+      h, "<td>[12,3,7]</td><td class=\"num\">0.25</td><td class=\"num\">[0.3, 0.45]</td><td class=\"num\">0.05</td>"));
   EXPECT_TRUE(has(h, "<li><code>output.unorm8</code></li>"));
 }
 
 TEST(HtmlReport, WritesIndexAndCasePages) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("voxref-html-test-" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("voxref-html-test-" + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
-  writeHtmlReport(dir, run(false), {result("a.one", "sparsegrid", Status::Pass), result("a/two", "sparsegrid", Status::Fail)});
+  writeHtmlReport(dir, run(false),
+                  {result("a.one", "sparsegrid", Status::Pass), result("a/two", "sparsegrid", Status::Fail)});
   const std::string index = io::readWholeFile(dir / "index.html");
   EXPECT_TRUE(has(index, "id=\"partial\""));
   EXPECT_TRUE(has(io::readWholeFile(dir / "cases/a.one.html"), "id=\"case-status\" data-status=\"pass\""));
@@ -202,8 +233,10 @@ TEST(HtmlIndex, DeparturesAreUnknownWithoutAProfile) {
   EXPECT_FALSE(has(page, "models no departure"));
   RunInfo softpipe = run(true);
   softpipe.driver["profile"] = {{"name", "softpipe"}};
-  EXPECT_TRUE(has(htmlIndex(softpipe, {result("a.b", "sparsegrid", Status::Pass)}), "softpipe.texture.tile_cache_aliasing"));
-  EXPECT_TRUE(has(htmlIndex(run(true), {result("a.b", "sparsegrid", Status::Pass)}), "None: the profile llvmpipe models no departure"));
+  EXPECT_TRUE(
+      has(htmlIndex(softpipe, {result("a.b", "sparsegrid", Status::Pass)}), "softpipe.texture.tile_cache_aliasing"));
+  EXPECT_TRUE(has(htmlIndex(run(true), {result("a.b", "sparsegrid", Status::Pass)}),
+                  "None: the profile llvmpipe models no departure"));
 }
 
 }  // namespace

@@ -61,11 +61,17 @@ TEST(ResultsReader, RejectsWhatIsNotAResultsFile) {
   EXPECT_THROW(loadResults(dir / "missing.json"), ResultsFormatError);
   EXPECT_THROW(loadResults(write("not_json.json", "{ cases: ")), ResultsFormatError);
   EXPECT_THROW(loadResults(write("other.json", R"({"format": "something-else"})")), ResultsFormatError);
-  EXPECT_THROW(loadResults(write("v2.json", R"({"format": "voxref-results", "format_version": 2, "cases": []})")), ResultsFormatError);
-  EXPECT_THROW(loadResults(write("bad_case.json", R"({"format": "voxref-results", "format_version": 1, "cases": [{"id": 3}]})")),
+  EXPECT_THROW(loadResults(write("v2.json", R"({"format": "voxref-results", "format_version": 2, "cases": []})")),
                ResultsFormatError);
+  EXPECT_THROW(
+      loadResults(write("bad_case.json", R"({"format": "voxref-results", "format_version": 1, "cases": [{"id": 3}]})")),
+      ResultsFormatError);
   EXPECT_THROW(loadResults(write("bad_status.json", R"({"format": "voxref-results", "format_version": 1, "cases": [)" +
-                                                        caseJson(everyField()).dump().replace(caseJson(everyField()).dump().find("\"timeout\""), 9, "\"exploded\"") + "]}")),
+                                                        caseJson(everyField())
+                                                            .dump()
+                                                            .replace(caseJson(everyField()).dump().find("\"timeout\""),
+                                                                     9, "\"exploded\"") +
+                                                        "]}")),
                ResultsFormatError);
   RunInfo run;
   const auto good = write("good.json", resultsJson(run, {everyField()}).dump());
@@ -85,14 +91,18 @@ TEST(ResultsReader, FuzzRegressions) {
     return "";
   };
   // number_overflow_escapes_parse: nlohmann throws out_of_range (not parse_error) for 1e999.
-  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e999})").find("r.json: not JSON"), std::string::npos);
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e999})").find("r.json: not JSON"),
+            std::string::npos);
   // format_not_a_string_escapes: value("format", "") threw type_error for an object.
   EXPECT_NE(error(R"({"format": {}})").find("not a voxref results file"), std::string::npos);
-  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": "1"})").find("results format version \"1\""), std::string::npos);
-  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e300})").find("results format version"), std::string::npos);
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": "1"})").find("results format version \"1\""),
+            std::string::npos);
+  EXPECT_NE(error(R"({"format": "voxref-results", "format_version": 1e300})").find("results format version"),
+            std::string::npos);
   // worst_pixel_null_coordinate_to_int: a null (NaN) or 1e300 pixel coordinate was cast to int.
   nlohmann::json c = caseJson(everyField());
-  for (const nlohmann::json& bad : {nlohmann::json(nullptr), nlohmann::json(1e300), nlohmann::json(2.5), nlohmann::json(4294967296LL)}) {
+  for (const nlohmann::json& bad :
+       {nlohmann::json(nullptr), nlohmann::json(1e300), nlohmann::json(2.5), nlohmann::json(4294967296LL)}) {
     nlohmann::json w = c;
     w["worst_pixels"][0]["x"] = bad;
     EXPECT_THROW((void)caseFromJson(w), ResultsFormatError) << bad.dump();

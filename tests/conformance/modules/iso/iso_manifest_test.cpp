@@ -9,7 +9,8 @@ namespace voxref::conf {
 namespace {
 
 nlohmann::json manifestOf(const std::vector<IsoScene>& scenes) {
-  nlohmann::json m{{"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
+  nlohmann::json m{
+      {"generator", kFixtureGenerator}, {"scenes", nlohmann::json::array()}, {"files", nlohmann::json::array()}};
   for (const IsoScene& s : scenes) {
     m["scenes"].push_back(toJson(s));
     m["files"].push_back({{"path", s.name + "/frame_00_mesh.exr"}, {"sha256", std::string(64, 'a')}});
@@ -39,10 +40,12 @@ TEST(IsoManifest, ErrorsAreFormatErrorsNamingTheField) {
   EXPECT_NE(errorOf(nlohmann::json::array()).find("manifest.json: expected a JSON object"), std::string::npos);
   nlohmann::json m = good;
   m["generator"] = 3;
-  EXPECT_NE(errorOf(m).find("generator: expected a string"), std::string::npos);  // was nlohmann's type_error, after regenerating
+  EXPECT_NE(errorOf(m).find("generator: expected a string"),
+            std::string::npos);  // was nlohmann's type_error, after regenerating
   m = good;
   m["files"][0]["path"] = "../../etc/passwd";
-  EXPECT_NE(errorOf(m).find("files[0].path: '../../etc/passwd' is not a relative path inside the fixture directory"), std::string::npos);
+  EXPECT_NE(errorOf(m).find("files[0].path: '../../etc/passwd' is not a relative path inside the fixture directory"),
+            std::string::npos);
   m["files"][0]["path"] = "/tmp/x";
   EXPECT_NE(errorOf(m).find("files[0].path"), std::string::npos);
   m = good;
@@ -68,7 +71,9 @@ TEST(IsoManifest, FuzzRegressions) {
   for (const char* name : {"", ".", "..", "a/b", "/tmp"}) {
     nlohmann::json m = good;
     m["scenes"][0]["name"] = name;
-    EXPECT_NE(errorOf(m).find("scenes[0].name: '" + std::string(name) + "' is not a plain file name"), std::string::npos) << name;
+    EXPECT_NE(errorOf(m).find("scenes[0].name: '" + std::string(name) + "' is not a plain file name"),
+              std::string::npos)
+        << name;
   }
   // iso_dims_float_overflows_int (scene_json): get<int>() of 1e300 was undefined behaviour.
   nlohmann::json m = good;

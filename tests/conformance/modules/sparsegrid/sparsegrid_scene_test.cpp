@@ -37,7 +37,8 @@ TEST(SparseGridScene, ErrorsNameTheFieldAndWhatWasExpected) {
   EXPECT_EQ(errorOf(R"({"level": 13})"), "level: 13 is outside 1..12");
   EXPECT_EQ(errorOf(R"({"level": 0})"), "level: 0 is outside 1..12");
   EXPECT_EQ(errorOf(R"({"level": "six"})"), "level: expected an integer, got \"six\"");
-  EXPECT_EQ(errorOf(R"({"framebuffer": "rgb565"})"), "framebuffer: 'rgb565' is not one of rgba8, rgba12, rgba16, rgba16f, rgba32f");
+  EXPECT_EQ(errorOf(R"({"framebuffer": "rgb565"})"),
+            "framebuffer: 'rgb565' is not one of rgba8, rgba12, rgba16, rgba16f, rgba32f");
   EXPECT_EQ(errorOf(R"({"texture": {"fromat": "r8"}})"), "texture.fromat: unknown key");
   EXPECT_EQ(errorOf(R"({"data": {"field": "nope"}})").rfind("data.field: unknown analytic field 'nope'", 0), 0u);
   EXPECT_EQ(errorOf(R"({"image": [0, 10]})"), "image: expected [width, height] within 1..4096");
@@ -53,7 +54,8 @@ TEST(SparseGridScene, IntegersAreCheckedBeforeTheyAreConverted) {
   EXPECT_EQ(errorOf(R"({"image": [48.5, 48]})"), "image: expected an array of integers, got [48.5,48]");
   EXPECT_EQ(errorOf(R"({"pass_order": [1e300]})"), "pass_order: expected an array of integers, got [1e+300]");
   EXPECT_EQ(errorOf(R"({"planes": 4294967360})"), "planes: expected an integer, got 4294967360");
-  EXPECT_EQ(errorOf(R"({"data": {"volume": "v.raw", "dims": [9, 9, -1e300]}})"), "data.dims: expected an array of integers, got [9,9,-1e+300]");
+  EXPECT_EQ(errorOf(R"({"data": {"volume": "v.raw", "dims": [9, 9, -1e300]}})"),
+            "data.dims: expected an array of integers, got [9,9,-1e+300]");
   EXPECT_EQ(errorOf(R"({"planes": 64, "image": [64, 64]})"), "");
 }
 

@@ -12,8 +12,10 @@ struct Fixture {
   ref::TransferFunction tf = ref::transferFunction("gray");
   ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, tf, {1, ref::IndexEncoding::BlockRgba8});
   // Every voxel centre of the 16^3 volume.
-  ref::PlaneFrame frame = ref::explicitFrame({0, 0, 0}, {1.0 / 16, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 16, 16, 16);
-  emu::EmulatedDecode decoded = emu::emulateDecodePlanes(tex, ref::DecoderVariant::TexelFetch, 0, frame, *emu::findProfile("llvmpipe"));
+  ref::PlaneFrame frame =
+      ref::explicitFrame({0, 0, 0}, {1.0 / 16, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 16, 16, 16);
+  emu::EmulatedDecode decoded =
+      emu::emulateDecodePlanes(tex, ref::DecoderVariant::TexelFetch, 0, frame, *emu::findProfile("llvmpipe"));
 };
 
 TEST(ClassifyFetches, RightFetchesAreRight) {
@@ -45,8 +47,10 @@ TEST(ClassifyFetches, AnotherVoxelOrBlockIsCountedAndPlaced) {
 
 TEST(ClassifyFetches, PlacesAtCoordinateOne) {
   Fixture f;
-  const ref::PlaneFrame one = ref::explicitFrame({1.0 - 1.0 / 32, 0, 0}, {1.0 / 16, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 1, 16, 16);
-  auto decoded = emu::emulateDecodePlanes(f.tex, ref::DecoderVariant::TexelFetch, 0, one, *emu::findProfile("llvmpipe"));
+  const ref::PlaneFrame one =
+      ref::explicitFrame({1.0 - 1.0 / 32, 0, 0}, {1.0 / 16, 0, 0}, {0, 1.0 / 16, 0}, {0, 0, 1.0 / 16}, 1, 16, 16);
+  auto decoded =
+      emu::emulateDecodePlanes(f.tex, ref::DecoderVariant::TexelFetch, 0, one, *emu::findProfile("llvmpipe"));
   EXPECT_EQ(classifyFetches(f.tex, f.series, f.tf, 0, one, decoded).wrong(), 0u);  // texel_fetch clamps the cell
   decoded.samples[0].indexTexel[0] += 1;
   const FetchCounts c = classifyFetches(f.tex, f.series, f.tf, 0, one, decoded);
