@@ -31,7 +31,7 @@ std::string quoted(std::string s) {  // a double-quoted string for gnuplot's dat
   return "\"" + s + "\"";
 }
 
-std::string number(double v) {
+std::string gnuplotNumber(double v) {
   char b[64];
   std::snprintf(b, sizeof b, "%.9g", v);
   return b;
@@ -99,7 +99,7 @@ std::string labels(const AccuracyPlot& plot, const Drawn& drawn, bool logY) {
                  std::fabs(std::log10(plot.points[i].cost) - std::log10(plot.points[j].cost)) < 0.5;
     out << "set label " << i + 1 << " "
         << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << " at "
-        << number(plot.points[i].cost) << "," << number(drawn(plot.points[i])) << " left offset char 1,"
+        << gnuplotNumber(plot.points[i].cost) << "," << gnuplotNumber(drawn(plot.points[i])) << " left offset char 1,"
         << shortNumber(0.7 + 1.2 * stacked) << " front\n";
   }
   return out.str();
@@ -151,14 +151,14 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
     const auto spread = i < plot.costSpread.size()
                             ? plot.costSpread[i]
                             : std::pair<double, double>(plot.points[i].cost, plot.points[i].cost);
-    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error)
-        << " " << onFront << " " << number(spread.first) << " " << number(spread.second) << " "
+    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " " << gnuplotNumber(plot.points[i].error)
+        << " " << onFront << " " << gnuplotNumber(spread.first) << " " << gnuplotNumber(spread.second) << " "
         << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
   }
   dat << "\n\n";
   for (std::size_t i : f.front)
-    dat << number(plot.points[i].cost) << " " << number(drawn(plot.points[i])) << " " << number(plot.points[i].error)
-        << " 1 " << number(plot.points[i].cost) << " " << number(plot.points[i].cost) << " " << quoted(plot.labels[i])
+    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " " << gnuplotNumber(plot.points[i].error)
+        << " 1 " << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(plot.points[i].cost) << " " << quoted(plot.labels[i])
         << "\n";
   if (f.front.empty()) dat << "# (no points)\n";
 

@@ -7,7 +7,7 @@
 namespace voxref::conf {
 namespace {
 
-nlohmann::json number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
 std::string errorText(double v) { return std::isnan(v) ? "n/a" : formatNumber("%.3g", v); }
 
@@ -53,10 +53,10 @@ BenchTable studyTable(const std::string& id, const std::string& title, const std
       t.rows.push_back({g.knob, v.name, errorText(v.error) + (v.missing.empty() ? "" : " (" + v.missing + ")"),
                         v.time.runs ? formatSeconds(v.time) : "n/a", spreadText(v.time), bytesText(v.memoryBytes)});
       variants.push_back({{"name", v.name},
-                          {"error", number(v.error)},
+                          {"error", jsonNumber(v.error)},
                           {"figures", v.figures},
                           {"time", v.time.runs ? toJson(v.time) : nlohmann::json(nullptr)},
-                          {"memory_bytes", number(v.memoryBytes)},
+                          {"memory_bytes", jsonNumber(v.memoryBytes)},
                           {"missing", v.missing}});
     }
     t.data["groups"].push_back({{"knob", g.knob},

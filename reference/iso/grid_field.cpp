@@ -4,14 +4,10 @@
 #include <string>
 
 #include "reference/leb/hz_order.h"
+#include "reference/leb/leb_page.h"
 #include "reference/leb/prediction.h"
 
 namespace voxref::ref {
-namespace {
-
-bool insideVolume(const GridPoint& p, const Dims3& d) { return p[0] < d[0] && p[1] < d[1] && p[2] < d[2]; }
-
-}  // namespace
 
 DenseGridField::DenseGridField(const Volume<std::uint16_t>& volume, const std::vector<std::int8_t>& gradients)
     : grid_(lebGridCovering(volume.dims())), dims_(volume.dims()) {

@@ -26,10 +26,6 @@ std::pair<int, int> longestEdge(const Tetrahedron& t) {
   return e;
 }
 
-std::string text(const GridPoint& p) {
-  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
-}
-
 }  // namespace
 
 std::array<Tetrahedron, 6> rootTetrahedra(const LebGrid& g) {
@@ -83,7 +79,7 @@ bool DiamondMesh::canMerge(const GridPoint& d) const {
 
 void DiamondMesh::merge(const GridPoint& d) {
   if (!canMerge(d))
-    throw std::logic_error("diamond " + text(d) +
+    throw std::logic_error("diamond " + pointText(d) +
                            (isSplit(d) ? " has a split child: merge the children first" : " is not split"));
   split_.erase(grid_.linearIndex(d));
 }

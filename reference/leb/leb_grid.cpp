@@ -8,13 +8,9 @@
 namespace voxref::ref {
 namespace {
 
-std::string text(const GridPoint& p) {
-  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
-}
-
 void requireInside(const LebGrid& g, const GridPoint& p) {
   if (!g.contains(p))
-    throw std::invalid_argument("point " + text(p) + " is outside the " + std::to_string(g.pointsPerAxis()) +
+    throw std::invalid_argument("point " + pointText(p) + " is outside the " + std::to_string(g.pointsPerAxis()) +
                                 "^3 grid");
 }
 
@@ -72,13 +68,13 @@ LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
 
 SplitEdge splitEdge(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   return splitEdgeOf(p, c.scaleLog2, c.oddAxes);
 }
 
 std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
   const SplitEdge e = splitEdge(g, p);
   std::vector<GridPoint> ring;
@@ -131,7 +127,7 @@ std::vector<GridPoint> diamondParents(const LebGrid& g, const GridPoint& p) {
 
 std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + text(p) + " is not the split vertex of a diamond");
+  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
   std::vector<GridPoint> children;
   if (c.phase == 2 || c.phase == 1) {
@@ -153,6 +149,10 @@ std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
   }
   keepInside(g, children);
   return children;
+}
+
+std::string pointText(const GridPoint& p) {
+  return "(" + std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")";
 }
 
 }  // namespace voxref::ref

@@ -25,6 +25,7 @@
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace voxref::ref {
@@ -63,6 +64,9 @@ struct LebGrid {
 LebGrid makeLebGrid(int k);
 // The smallest grid whose (2^k + 1)^3 points cover `dims` (each extent >= 1).
 LebGrid lebGridCovering(const std::array<int, 3>& dims);
+
+// "(x, y, z)", for the messages that name a point.
+std::string pointText(const GridPoint& p);
 
 struct LebPointClass {
   int level = -1;        // -1 for a root corner

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 namespace voxref::emu {
-namespace {
+namespace framebuffer_emu_test {  // named: a unity build compiles several test files together
 
 using ref::BlendEquation;
 using ref::FramebufferFormat;
@@ -90,5 +90,5 @@ TEST(BlendEmu, RefusesTargetsTheTileCacheModelDoesNotCover) {
   EXPECT_NO_THROW(BlendEmu(FramebufferFormat::RGBA8, llvmpipe(), false, 4096, 4096));
 }
 
-}  // namespace
+}  // namespace framebuffer_emu_test
 }  // namespace voxref::emu

@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 
 namespace voxref::emu {
-namespace {
+namespace texture_sampler_emu_test {  // named: a unity build compiles several test files together
 
 const PrecisionProfile& llvmpipe() { return *findProfile("llvmpipe"); }
 const PrecisionProfile& softpipe() { return *findProfile("softpipe"); }
@@ -101,5 +101,5 @@ TEST(TextureSamplerEmu, PathAndEffectsFollowFormatWrapAndProfile) {
   EXPECT_EQ(std::find(e.begin(), e.end(), Effect::SamplerFloatWeights), e.end());  // NEAREST has no weight stage
 }
 
-}  // namespace
+}  // namespace texture_sampler_emu_test
 }  // namespace voxref::emu

@@ -28,7 +28,7 @@
 #include "tests/property/property_seed.h"
 
 namespace voxref::emu {
-namespace {
+namespace blending_property_test {  // named: a unity build compiles several test files together
 
 using property::coin;
 using property::Rng;
@@ -214,5 +214,5 @@ TEST(BlendingProperty, OneOneAccumulationMatchesTheModelOfEveryFormatAndProfile)
   });
 }
 
-}  // namespace
+}  // namespace blending_property_test
 }  // namespace voxref::emu

@@ -28,7 +28,7 @@
 #include "tests/property/property_seed.h"
 
 namespace voxref::ref {
-namespace {
+namespace leb_property_test {  // named: a unity build compiles several test files together
 
 using property::coin;
 using property::Rng;
@@ -242,5 +242,5 @@ TEST(LebProperty, RandomVolumesRoundTripLosslessly) {
   });
 }
 
-}  // namespace
+}  // namespace leb_property_test
 }  // namespace voxref::ref

@@ -19,7 +19,7 @@
 #include "tests/property/property_seed.h"
 
 namespace voxref::emu {
-namespace {
+namespace mod_addressing_property_test {  // named: a unity build compiles several test files together
 
 using property::coin;
 using property::Rng;
@@ -110,5 +110,5 @@ TEST(ModAddressingProperty, GlslModIsWithinTwoRoundingsOfTheExactMod) {
   });
 }
 
-}  // namespace
+}  // namespace mod_addressing_property_test
 }  // namespace voxref::emu

@@ -28,7 +28,7 @@
 #include "tests/property/property_seed.h"
 
 namespace voxref::emu {
-namespace {
+namespace sampling_property_test {  // named: a unity build compiles several test files together
 
 using property::coin;
 using property::Rng;
@@ -278,5 +278,5 @@ TEST(SamplingProperty, NearestClampToEdgeIsBitExactAgainstTheModel) {
   checkLookups(ref::Filter::Nearest, ref::Wrap::ClampToEdge, true);
 }
 
-}  // namespace
+}  // namespace sampling_property_test
 }  // namespace voxref::emu

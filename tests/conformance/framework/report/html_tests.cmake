@@ -19,7 +19,7 @@ function(voxref_html_check name page)
   if(ARG_BREAK)
     list(APPEND args "-DBREAK=${ARG_BREAK}" "-DEXPECT_PROBLEM=${ARG_EXPECT_PROBLEM}")
   endif()
-  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} ${args} -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} ${args} -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/report/check_html_page.cmake")
   set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED html_report LABELS report TIMEOUT 300
                        SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")
 endfunction()
@@ -34,10 +34,10 @@ voxref_html_check(report.html.negative_control.missing_image case BREAK missing_
 # shown and loaded, a section per table; a plot that does not load must be caught.
 add_test(NAME bench.study.page_in_chromium
          COMMAND ${CMAKE_COMMAND} "-DCHROMIUM=${VOXREF_CHROMIUM}" "-DREPORT_DIR=${test_out}/bench-study" -DPAGE=bench
-                 "-DSCRATCH=${test_out}/chromium/bench-study" -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+                 "-DSCRATCH=${test_out}/chromium/bench-study" -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/report/check_html_page.cmake")
 add_test(NAME bench.study.page_negative_control.missing_image
          COMMAND ${CMAKE_COMMAND} "-DCHROMIUM=${VOXREF_CHROMIUM}" "-DREPORT_DIR=${test_out}/bench-study" -DPAGE=bench -DBREAK=missing_image
                  "-DEXPECT_PROBLEM=could not load img [^ ]*plots/no-such-" "-DSCRATCH=${test_out}/chromium/bench-study-nc"
-                 -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/report/check_html_page.cmake")
+                 -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/report/check_html_page.cmake")
 set_tests_properties(bench.study.page_in_chromium bench.study.page_negative_control.missing_image PROPERTIES
                      FIXTURES_REQUIRED bench_study LABELS "bench;report" TIMEOUT 300 SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")

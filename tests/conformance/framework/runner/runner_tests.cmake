@@ -48,13 +48,13 @@ voxref_expect(runner.same_bits_check_can_fail
   COMMAND "${check}|${test_out}/runner-noaos/results.json|--same-results-as|${test_out}/runner-jobs2/results.json"
   EXIT 1 OUTPUT "VIOLATION: sparsegrid.texture.r8.[a-z]+.linear.repeat differs from" LABELS runner NEEDS "runner_jobs2;runner_noaos")
 
-add_test(NAME runner.shard COMMAND ${CMAKE_COMMAND} -DVOXREF=$<TARGET_FILE:voxref> -P ${CMAKE_CURRENT_SOURCE_DIR}/conformance/runner/shard_test.cmake)
+add_test(NAME runner.shard COMMAND ${CMAKE_COMMAND} -DVOXREF=$<TARGET_FILE:voxref> -P ${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/runner/shard_test.cmake)
 set_tests_properties(runner.shard PROPERTIES LABELS runner)
 voxref_expect(runner.shard_conform COMMAND "${voxref_bin}|conform|--filter|sparsegrid.hard.*|--shard|2/5|--out|${test_out}/runner-shard"
   EXIT 0 OUTPUT "case\\(s\\) \\(shard 2/5 of [0-9]+\\)" LABELS runner)
 
 add_test(NAME runner.interrupt_leaves_partial_report
-  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/conformance/runner/interrupt_test.sh $<TARGET_FILE:voxref> $<TARGET_FILE:check_results> ${test_out}/runner-interrupt)
+  COMMAND sh ${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/runner/interrupt_test.sh $<TARGET_FILE:voxref> $<TARGET_FILE:check_results> ${test_out}/runner-interrupt)
 set_tests_properties(runner.interrupt_leaves_partial_report PROPERTIES LABELS runner TIMEOUT 300)
 
 # --baseline: the right profile's run is the baseline; the wrong profile's run regresses (exit 3)
