@@ -151,15 +151,16 @@ PlotFiles writeAccuracyPlot(const AccuracyPlot& plot, const std::filesystem::pat
     const auto spread = i < plot.costSpread.size()
                             ? plot.costSpread[i]
                             : std::pair<double, double>(plot.points[i].cost, plot.points[i].cost);
-    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " " << gnuplotNumber(plot.points[i].error)
-        << " " << onFront << " " << gnuplotNumber(spread.first) << " " << gnuplotNumber(spread.second) << " "
+    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " "
+        << gnuplotNumber(plot.points[i].error) << " " << onFront << " " << gnuplotNumber(spread.first) << " "
+        << gnuplotNumber(spread.second) << " "
         << quoted(plot.labels[i] + (plot.points[i].error == 0.0 && logY ? " (= 0)" : "")) << "\n";
   }
   dat << "\n\n";
   for (std::size_t i : f.front)
-    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " " << gnuplotNumber(plot.points[i].error)
-        << " 1 " << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(plot.points[i].cost) << " " << quoted(plot.labels[i])
-        << "\n";
+    dat << gnuplotNumber(plot.points[i].cost) << " " << gnuplotNumber(drawn(plot.points[i])) << " "
+        << gnuplotNumber(plot.points[i].error) << " 1 " << gnuplotNumber(plot.points[i].cost) << " "
+        << gnuplotNumber(plot.points[i].cost) << " " << quoted(plot.labels[i]) << "\n";
   if (f.front.empty()) dat << "# (no points)\n";
 
   const std::string data = plot.id + ".dat";

@@ -68,13 +68,15 @@ LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
 
 SplitEdge splitEdge(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   return splitEdgeOf(p, c.scaleLog2, c.oddAxes);
 }
 
 std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
   const SplitEdge e = splitEdge(g, p);
   std::vector<GridPoint> ring;
@@ -127,7 +129,8 @@ std::vector<GridPoint> diamondParents(const LebGrid& g, const GridPoint& p) {
 
 std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
   std::vector<GridPoint> children;
   if (c.phase == 2 || c.phase == 1) {

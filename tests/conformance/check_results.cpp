@@ -13,6 +13,8 @@
 // --same-results-as OTHER.json: every case has the same status, message, oracles, effects,
 //   findings, figures and worst pixels as in OTHER (times, stderr and the run's own fields such
 //   as the command and --jobs aside), and every image file both name is the same, byte for byte.
+//   Cases are matched by id; both runs hold the same cases.
+// --same-results-as-subset OTHER.json: the same, where OTHER may hold more cases than this run.
 // --expect-envelope-alone: the run names no profile and says it is judged by the envelope alone;
 //   no case ran the exact oracle, and every case's envelope oracle ran.
 // --expect-regressed ID / --expect-fixed ID: the "baseline" block lists the case so.
@@ -85,6 +87,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> expectRegressed, expectFixed, failuresWithFinding;
   bool expectInterrupted = false, envelopeAlone = false;
   std::string sameAs;
+  bool sameAsSubset = false;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--profile" && i + 1 < argc)
@@ -109,7 +112,10 @@ int main(int argc, char** argv) {
       envelopeAlone = true;
     else if (a == "--same-results-as" && i + 1 < argc)
       sameAs = argv[++i];
-    else if (a == "--expect-regressed" && i + 1 < argc)
+    else if (a == "--same-results-as-subset" && i + 1 < argc) {
+      sameAs = argv[++i];
+      sameAsSubset = true;
+    } else if (a == "--expect-regressed" && i + 1 < argc)
       expectRegressed.push_back(argv[++i]);
     else if (a == "--expect-fixed" && i + 1 < argc)
       expectFixed.push_back(argv[++i]);
@@ -233,23 +239,32 @@ int main(int argc, char** argv) {
   if (!sameAs.empty()) {
     nlohmann::json other;
     if (!readJson(sameAs, other)) return 2;
-    const auto& otherCases = other["cases"];
-    if (otherCases.size() != cases.size())
-      violation("the runs hold " + std::to_string(cases.size()) + " and " + std::to_string(otherCases.size()) +
+    // Cases are matched by id. Every case of this run must be in OTHER with the same results; with
+    // --same-results-as-subset OTHER may hold more (a smaller run checked against a larger one).
+    std::map<std::string, const nlohmann::json*> otherById;
+    for (const auto& c : other["cases"]) otherById[c.value("id", "")] = &c;
+    if (!sameAsSubset && other["cases"].size() != cases.size())
+      violation("the runs hold " + std::to_string(cases.size()) + " and " + std::to_string(other["cases"].size()) +
                 " cases");
     const std::filesystem::path here = std::filesystem::path(argv[1]).parent_path(),
                                 there = std::filesystem::path(sameAs).parent_path();
     std::size_t images = 0;
-    for (std::size_t i = 0; i < std::min(cases.size(), otherCases.size()); ++i) {
-      const nlohmann::json a = stable(cases[i]), b = stable(otherCases[i]);
+    for (const auto& c : cases) {
+      const std::string id = c.value("id", "");
+      const auto found = otherById.find(id);
+      if (found == otherById.end()) {
+        violation(id + " is not in " + sameAs);
+        continue;
+      }
+      const nlohmann::json a = stable(c), b = stable(*found->second);
       if (a != b) {
-        violation(a["id"].get<std::string>() + " differs from " + b["id"].get<std::string>() + " in " + sameAs);
+        violation(id + " differs from " + id + " in " + sameAs);
         continue;
       }
       for (const auto& [kind, file] : a["images"].items()) {
         ++images;
         if (fileBytes(here / file.get<std::string>()) != fileBytes(there / file.get<std::string>()))
-          violation(a["id"].get<std::string>() + ": image " + file.get<std::string>() + " differs between the runs");
+          violation(id + ": image " + file.get<std::string>() + " differs between the runs");
       }
     }
     std::cout << "check_results: compared with " << sameAs << ": " << images

@@ -4,6 +4,8 @@
 #include <random>
 #include <set>
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 #include "reference/timevarying/plume.h"
@@ -177,6 +179,22 @@ TEST(DischargePlume, DeterministicAndOnTarget) {
   const TimeSeries s = dischargePlumeWithSparseness({32, 6}, 0.997, &got);
   EXPECT_NEAR(got, 0.997, 0.0005);
   EXPECT_EQ(sparseness(s), got);
+}
+
+// The sparseness search simulates the field once; it must give the very series of the plain
+// bisection that generates the whole plume at every gain it tries (the definition).
+TEST(DischargePlume, SparsenessSearchEqualsTheBisectionOverWholePlumes) {
+  for (const double target : {0.99, 0.997}) {
+    PlumeOptions o{32, 5};
+    double lo = -4.0, hi = 20.0;
+    for (int i = 0; i < 26; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      o.gain = std::exp2(mid);
+      (sparseness(dischargePlume(o)) > target ? lo : hi) = mid;
+    }
+    o.gain = std::exp2(hi);
+    EXPECT_EQ(dischargePlumeWithSparseness({32, 5}, target).steps, dischargePlume(o).steps) << target;
+  }
 }
 
 }  // namespace

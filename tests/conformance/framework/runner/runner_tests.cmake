@@ -30,23 +30,9 @@ voxref_expect(runner.in_process_refuses_controls
   COMMAND "${voxref_bin}|conform|--in-process|--runner-controls|--filter|runner.*|--out|${test_out}/runner-inproc" EXIT 2
   OUTPUT "--in-process cannot run the runner's control cases")
 
-# --jobs does not change a bit: results and every image, 2 processes against 1 and against no isolation.
-set(jobs_filter "sparsegrid.combination.rgba8.l5.*,sparsegrid.texture.r8.*.linear.repeat,timevarying.decode.*.voxel_centres,timevarying.composite.*,iso.hard.*")
-voxref_expect(runner.jobs2 COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|2|--all-images|--out|${test_out}/runner-jobs2"
-  EXIT 0 LABELS runner TIMEOUT 600 SETS runner_jobs2)
-voxref_expect(runner.jobs1_same_bits COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|1|--all-images|--out|${test_out}/runner-jobs1"
-  EXIT 0 CHECK "${check}|${test_out}/runner-jobs1/results.json|--same-results-as|${test_out}/runner-jobs2/results.json|--min-cases|10"
-  LABELS runner TIMEOUT 600 NEEDS runner_jobs2)
-voxref_expect(runner.in_process_same_bits COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--in-process|--all-images|--out|${test_out}/runner-inproc-same"
-  EXIT 0 CHECK "${check}|${test_out}/runner-inproc-same/results.json|--same-results-as|${test_out}/runner-jobs2/results.json|--min-cases|10"
-  LABELS runner TIMEOUT 600 NEEDS runner_jobs2)
-# The comparison can fail: the same cases on llvmpipe without its 8-bit sampler all pass, but
-# their bits differ (the r8 LINEAR cases filter with float weights), and check_results says so.
-voxref_expect(runner.noaos_run COMMAND "${voxref_bin}|conform|--filter|${jobs_filter}|--jobs|2|--all-images|--out|${test_out}/runner-noaos"
-  EXIT 0 ENVIRONMENT "GALLIVM_PERF=no_aos_sampling" LABELS runner TIMEOUT 600 SETS runner_noaos)
-voxref_expect(runner.same_bits_check_can_fail
-  COMMAND "${check}|${test_out}/runner-noaos/results.json|--same-results-as|${test_out}/runner-jobs2/results.json"
-  EXIT 1 OUTPUT "VIOLATION: sparsegrid.texture.r8.[a-z]+.linear.repeat differs from" LABELS runner NEEDS "runner_jobs2;runner_noaos")
+# --jobs and --in-process do not change a bit: tests/conformance/determinism_tests.cmake
+# (determinism.one_thread_one_process, determinism.in_process_vector_width_128) and its negative
+# control runner.same_bits_check_can_fail.
 
 add_test(NAME runner.shard COMMAND ${CMAKE_COMMAND} -DVOXREF=$<TARGET_FILE:voxref> -P ${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/runner/shard_test.cmake)
 set_tests_properties(runner.shard PROPERTIES LABELS runner)
