@@ -126,21 +126,34 @@ TimeVaryingEnvelope::Range TimeVaryingEnvelope::nearest(const Interval& s, int n
 
 void TimeVaryingEnvelope::addRefinement(const std::array<std::vector<Range>, 3>& axes,
                                         std::vector<RgbaIntervals>& out) const {
-  std::array<std::vector<int>, 3> texels;
+  // Per axis, the union of the texel ranges as sorted disjoint ranges (merged, not expanded: an
+  // unconstrained coordinate covers the whole texture, and sorting every texel of it was most of a
+  // literal decoder's envelope time).
+  std::array<std::vector<Range>, 3> merged;
+  std::size_t count = 1;
   for (int a = 0; a < 3; ++a) {
-    for (const Range& r : axes[a])
-      for (int t = r.lo; t <= r.hi; ++t) texels[a].push_back(t);
-    std::sort(texels[a].begin(), texels[a].end());
-    texels[a].erase(std::unique(texels[a].begin(), texels[a].end()), texels[a].end());
+    std::vector<Range> ranges = axes[a];
+    std::sort(ranges.begin(), ranges.end(), [](const Range& l, const Range& r) { return l.lo < r.lo; });
+    std::size_t texels = 0;
+    for (const Range& r : ranges) {
+      if (!merged[a].empty() && r.lo <= merged[a].back().hi + 1)
+        merged[a].back().hi = std::max(merged[a].back().hi, r.hi);
+      else
+        merged[a].push_back(r);
+    }
+    for (const Range& r : merged[a]) texels += static_cast<std::size_t>(r.hi - r.lo + 1);
+    count *= texels;
   }
-  if (texels[0].size() * texels[1].size() * texels[2].size() >
-      4096) {  // whole regions: their hull is the whole texture's, at worst
+  if (count > 4096) {  // whole regions: their hull is the whole texture's, at worst
     out.push_back(refinementHull_);
     return;
   }
-  for (int z : texels[2])
-    for (int y : texels[1])
-      for (int x : texels[0]) out.push_back(refinementValue(x, y, z));
+  for (const Range& rz : merged[2])
+    for (int z = rz.lo; z <= rz.hi; ++z)
+      for (const Range& ry : merged[1])
+        for (int y = ry.lo; y <= ry.hi; ++y)
+          for (const Range& rx : merged[0])
+            for (int x = rx.lo; x <= rx.hi; ++x) out.push_back(refinementValue(x, y, z));
 }
 
 void TimeVaryingEnvelope::paperOrLiteral(int step, const glm::dvec3& p, const EnvelopePrecision& prec,

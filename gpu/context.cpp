@@ -34,6 +34,10 @@ std::unique_ptr<Context> createContext(Driver driver) {
   return driver == Driver::Egl ? createEglContext() : createOsmesaContext(driver);
 }
 
+void preloadDriverLibrary(Driver driver) {
+  if (driver != Driver::Egl) loadOsmesaLibrary();
+}
+
 std::vector<std::pair<std::string, std::string>> environmentPins() {
   std::vector<std::pair<std::string, std::string>> pins;
   static constexpr const char* kAlways[] = {

@@ -49,6 +49,13 @@ class Context {
 // the highest of 4.5 / 3.3 core for EGL.
 std::unique_ptr<Context> createContext(Driver driver);
 
+// Loads the driver's library (libOSMesa and what it links: LLVM, the gallium drivers) into this
+// process without creating a context, screen or thread, so that processes forked afterwards share
+// the loaded, relocated library instead of each loading it again (symbol binding was about 80 % of
+// a case process's start-up). Throws GlUnavailable as createContext would; does nothing for EGL,
+// whose driver is chosen and loaded only by eglInitialize.
+void preloadDriverLibrary(Driver driver);
+
 // Environment variables that change which driver runs or what it computes (docs/precision.md),
 // so that a report says how to reproduce its run: GALLIUM_DRIVER, GALLIVM_PERF,
 // LP_NATIVE_VECTOR_WIDTH, LP_PERF, GALLIUM_OVERRIDE_CPU_CAPS and EGL_PLATFORM always (value or

@@ -54,6 +54,12 @@ const OsmesaLibrary& osmesa() {
   return lib;
 }
 
+}  // namespace
+
+void loadOsmesaLibrary() { osmesa(); }
+
+namespace {
+
 class OsmesaContext final : public Context {
  public:
   explicit OsmesaContext(Driver driver) {

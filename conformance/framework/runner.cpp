@@ -155,6 +155,14 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
     }
   }
   const Identity identity = identify(options);
+  // The identity child has loaded the driver's library and made a context with it: now the parent
+  // loads the library too (no context, no thread), so that every case process forked from it
+  // starts without loading and binding it again. A failure here changes nothing: each case's
+  // process loads it as before and reports what it meets.
+  if (!options.inProcess) try {
+      gpu::preloadDriverLibrary(options.driver);
+    } catch (const gpu::GlUnavailable&) {
+    }
   io::ensureDirectory(options.outDir);
 
   RunInfo run;
