@@ -8,7 +8,7 @@ export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
-  libglm-dev libosmesa6-dev libegl-dev libgl1-mesa-dri \
+  libglm-dev libosmesa6-dev libegl-dev libgl1-mesa-dri mesa-vulkan-drivers \
   libopenexr-dev libopenimageio-dev libembree-dev \
   libgtest-dev libgmock-dev clang clang-format libclang-rt-14-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libzstd-dev liblzma-dev libssl-dev \
   chromium gnuplot-nox \

@@ -35,6 +35,11 @@ enum class FramebufferModel {
 
 enum class UnormRounding { HalfEven, HalfUp };
 
+// How the 8-bit path rounds each lerp back to 8 bits: a + ((w (b - a) + 128) >> 8) with SSSE3's
+// pmulhrsw, a + ((w (b - a)) >> 8) without it (lp_bld_arit.c, lp_build_lerp; measured by the probe's
+// sampling.unorm8.lerp_rounding under GALLIUM_OVERRIDE_CPU_CAPS=sse3).
+enum class Lerp8Rounding { Nearest, Floor };
+
 // softpipe's texture tile cache (sp_tex_tile_cache.[ch]): direct mapped, `slots` entries of
 // tileSize x tileSize texels, slot = (tile x + yMultiplier * tile y + z) % slots for level 0.
 // img_filter_3d_linear (sp_tex_sample.c:1873-1918) takes all eight texel *pointers* into the
@@ -56,6 +61,7 @@ struct PrecisionProfile {
   // llvmpipe's 8-bit fixed-point ("AoS") path for unorm8 formats whose wraps are all REPEAT or
   // CLAMP_TO_EDGE: 8 subtexel bits, 8-bit lerps rounded as pmulhrsw does.
   bool aos8BitSampling = false;
+  Lerp8Rounding aosLerp = Lerp8Rounding::Nearest;
   LerpArithmetic floatLerp = LerpArithmetic::Unfused;
   bool flushDenormals = false;        // FTZ/DAZ in texture filtering and float32 blending
   TextureTileCache textureTileCache;  // softpipe only
@@ -73,6 +79,10 @@ struct PrecisionProfile {
   int maxModelledTargetWidth = 1 << 30;
   int maxModelledTargetHeight = 1 << 30;
   std::string_view environment;  // the driver environment this profile describes
+  // Built by `voxref probe` from what it measured rather than calibrated by hand
+  // (conformance/framework/probe/probed_profile.h): an exact failure against it says the probed
+  // model does not hold, not that the driver regressed.
+  bool probed = false;
 };
 
 std::span<const PrecisionProfile> knownProfiles();

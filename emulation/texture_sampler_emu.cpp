@@ -327,8 +327,10 @@ float TextureSamplerEmu::sampleRed(float s, float t, float r, bool* unmodelled) 
     }
     case SamplerPath::Aos8Linear: {
       const FixedAxis ax = aosLinearAxis(s, dims_[0]), ay = aosLinearAxis(t, dims_[1]), az = aosLinearAxis(r, dims_[2]);
-      // pmulhrsw rounding (SSSE3 / AVX2): a + floor((w (b - a) + 128) / 256).
-      auto lerp8 = [](int w, int a, int b) { return a + ((w * (b - a) + 128) >> 8); };
+      // pmulhrsw rounding (SSSE3 / AVX2): a + floor((w (b - a) + 128) / 256); without SSSE3 the
+      // product is shifted down without rounding: a + floor(w (b - a) / 256).
+      const int half = profile_->aosLerp == Lerp8Rounding::Nearest ? 128 : 0;
+      auto lerp8 = [half](int w, int a, int b) { return a + ((w * (b - a) + half) >> 8); };
       auto v = [&](int x, int y, int z) { return static_cast<int>(texelCode8(x, y, z)); };
       auto slice = [&](int z) {
         const int row0 = lerp8(ax.w, v(ax.i0, ay.i0, z), v(ax.i1, ay.i0, z));

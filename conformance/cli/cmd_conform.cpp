@@ -61,7 +61,10 @@ Subcommand addConformCommand(CLI::App& app, const std::string& invocation) {
       app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
   sub->add_option("--filter", o->filter, "shell-style glob on case ids")->default_val("*");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
-  sub->add_option("--profile", o->profile, "auto or a precision profile name")->default_val("auto");
+  sub->add_option("--profile", o->profile,
+                  "auto (by GL_RENDERER, else the probe), envelope, a profile name, or a driver file FILE.json that "
+                  "voxref probe --out wrote")
+      ->default_val("auto");
   sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
       ->default_val("voxref-report");
   sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);

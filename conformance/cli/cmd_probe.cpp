@@ -8,6 +8,7 @@
 #include "conformance/framework/exit_status.h"
 #include "conformance/framework/probe/driver_fingerprint.h"
 #include "conformance/framework/probe/fingerprint_match.h"
+#include "conformance/framework/probe/probed_profile.h"
 #include "conformance/io/atomic_file.h"
 #include "gpu/gl_error.h"
 #include "gpu/probe_gl.h"
@@ -54,12 +55,31 @@ int runProbe(const ProbeOptions& o) {
   std::cout << "auto would pick " << (autoPick ? std::string(autoPick->name) : "no profile") << " (" << how << "), "
             << (confirmsAuto ? "which the probe confirms" : "which the probe does not confirm") << "\n";
 
+  // The profile built from the probed properties: what `conform --profile driver.json` pins.
+  const conf::ProbedProfile probed = conf::confirmedProbedProfile(design, frames, fingerprint, "probed", info.renderer);
+  if (probed.profile)
+    std::cout << "probed profile: built from the " << fingerprint.properties.size()
+              << " properties; its emulation reproduces all " << frames.size() << " probe frames"
+              << (o.out.empty() ? " (--out FILE.json saves it for voxref conform --profile FILE.json)\n" : "\n");
+  else
+    std::cout << "no probed profile: " << probed.problem << "\n";
+
   if (!o.out.empty()) {
     nlohmann::json j = conf::probeJson(fingerprint, comparisons);
     j["driver"] = conf::driverJson(info, autoPick, how);
     j["auto_confirmed"] = confirmsAuto;
+    if (probed.profile) {
+      j["probed_profile"] = conf::profileToJson(*probed.profile);
+      j["assumed"] = probed.assumed;
+    } else {
+      j["probed_profile_problem"] = probed.problem;
+    }
     io::writeFileAtomically(o.out, j.dump(2) + "\n");
-    std::cout << "wrote " << o.out.string() << "\n";
+    std::cout << "wrote " << o.out.string()
+              << (probed.profile
+                      ? " (voxref conform --profile " + o.out.string() + " judges exactly against its probed profile)"
+                      : std::string())
+              << "\n";
   }
   return matched ? 0 : 1;
 }
@@ -71,7 +91,9 @@ Subcommand addProbeCommand(CLI::App& app) {
   CLI::App* sub =
       app.add_subcommand("probe", "infer the driver's precision from probe frames and match it to the known profiles");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
-  sub->add_option("--out", o->out, "also write the fingerprint as JSON");
+  sub->add_option(
+      "--out", o->out,
+      "also write the fingerprint and the probed profile as JSON (a driver file for conform --profile FILE.json)");
 
   return {sub, [o] { return runProbe(*o); }};
 }

@@ -57,15 +57,68 @@ Status statusFromOracles(const std::vector<OracleResult>& oracles) {
   return s;
 }
 
+std::string_view name(Judge j) {
+  switch (j) {
+    case Judge::None:
+      return "none";
+    case Judge::Exact:
+      return "exact";
+    case Judge::Envelope:
+      return "envelope";
+    case Judge::Fetch:
+      return "fetch";
+    case Judge::IsoGeometry:
+      return "iso_geometry";
+    case Judge::Prediction:
+      return "prediction";
+    case Judge::GlBehaviour:
+      return "gl_behaviour";
+  }
+  return "?";
+}
+
+std::optional<Judge> parseJudge(std::string_view s) {
+  for (Judge j : kJudges)
+    if (name(j) == s) return j;
+  return std::nullopt;
+}
+
+namespace {
+
+std::string firstLine(const std::string& s) {
+  return s.empty() ? std::string("(no summary)") : s.substr(0, s.find('\n'));
+}
+
+}  // namespace
+
 void concludeFromOracles(CaseResult& result) {
   result.status = statusFromOracles(result.oracles);
   result.message.clear();
   for (const Verdict wanted : {Verdict::Fail, Verdict::Warn})
     for (const OracleResult& o : result.oracles)
-      if (result.message.empty() && o.verdict == wanted) {
-        const std::string summary = o.summary.empty() ? "(no summary)" : o.summary;
-        result.message = o.oracle + ": " + summary.substr(0, summary.find('\n'));
-      }
+      if (result.message.empty() && o.verdict == wanted) result.message = o.oracle + ": " + firstLine(o.summary);
+  result.judgedBy = Judge::None;
+  for (const Judge j : kJudges)
+    for (const OracleResult& o : result.oracles)
+      if (result.judgedBy == Judge::None && j != Judge::None && o.judges == j &&
+          (o.verdict == Verdict::Pass || o.verdict == Verdict::Warn || o.verdict == Verdict::Fail))
+        result.judgedBy = j;
+  if (result.judgedBy != Judge::None || result.status == Status::Fail) return;
+  // Nothing judged GL's output: never a pass. The reason: why each oracle that could have judged did not.
+  std::string why;
+  for (const OracleResult& o : result.oracles)
+    if (o.verdict != Verdict::Info) why += (why.empty() ? "" : "; ") + o.oracle + ": " + firstLine(o.summary);
+  result.status = Status::Skip;
+  result.message =
+      "not judged on this driver: " + (why.empty() ? std::string("no oracle of this case judges the GL output") : why);
+}
+
+void markProbedModelFailure(CaseResult& result) {
+  for (const OracleResult& o : result.oracles)
+    if (o.judges == Judge::Exact && o.verdict == Verdict::Fail && !result.probedModelFailed) {
+      result.probedModelFailed = true;
+      result.message = "the probed model does not hold here: " + result.message;
+    }
 }
 
 }  // namespace voxref::conf

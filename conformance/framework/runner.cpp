@@ -10,8 +10,11 @@
 #include "conformance/framework/driver_info.h"
 #include "conformance/framework/isolation/child_processes.h"
 #include "conformance/framework/isolation/interrupt.h"
+#include "conformance/framework/probe/probed_profile.h"
+#include "conformance/framework/probe/profile_choice.h"
 #include "conformance/framework/progress.h"
 #include "conformance/framework/report/baseline_diff.h"
+#include "conformance/framework/report/judgement_counts.h"
 #include "conformance/framework/report/report_files.h"
 #include "conformance/framework/report/results_json.h"
 #include "conformance/framework/report/results_reader.h"
@@ -24,30 +27,34 @@ namespace {
 // The driver's identity and the profile, as a child process learns them.
 struct Identity {
   nlohmann::json driver;
-  std::string profileName;  // empty: none (envelope oracle alone)
+  const emu::PrecisionProfile* profile = nullptr;  // nullptr: none (envelope oracle alone)
   std::string renderer, version;
 };
 
-// In this process: creates a context and chooses the profile. Throws gpu::GlUnavailable or
-// UsageError (unknown profile).
+// In this process: creates a context and chooses the profile (probe/profile_choice.h; the probe
+// renders on this context where it runs). Throws gpu::GlUnavailable or UsageError (unknown
+// profile, a driver.json the driver no longer probes as).
 nlohmann::json identifyHere(const RunOptions& options) {
   std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
-  std::string how;
-  const emu::PrecisionProfile* profile = nullptr;
-  try {
-    profile = chooseProfile(options.profile, gl->info(), how);
-  } catch (const std::invalid_argument& e) {
-    throw UsageError(e.what());
-  }
-  return {{"driver", driverJson(gl->info(), profile, how)},
-          {"profile", profile ? std::string(profile->name) : std::string()},
+  const ProfileChoice choice = chooseRunProfile(options.profile, *gl);
+  nlohmann::json driver = driverJson(gl->info(), choice.profile, choice.how);
+  if (!choice.probe.is_null()) driver["probe"] = choice.probe;
+  // The whole profile travels to the parent (a probed one exists only in this process).
+  return {{"driver", driver},
+          {"profile", choice.profile ? profileToJson(*choice.profile) : nlohmann::json(nullptr)},
           {"renderer", gl->info().renderer},
           {"version", gl->info().version}};
 }
 
 Identity toIdentity(const nlohmann::json& j) {
-  return {j.at("driver"), j.at("profile").get<std::string>(), j.at("renderer").get<std::string>(),
-          j.at("version").get<std::string>()};
+  const nlohmann::json& p = j.at("profile");
+  const emu::PrecisionProfile* profile = nullptr;
+  if (!p.is_null()) {
+    const emu::PrecisionProfile* known =
+        p.at("probed").get<bool>() ? nullptr : emu::findProfile(p.at("name").get<std::string>());
+    profile = known ? known : &profileFromJson(p);
+  }
+  return {j.at("driver"), profile, j.at("renderer").get<std::string>(), j.at("version").get<std::string>()};
 }
 
 // Learns the identity in a child, so that the parent never holds a GL context (or its threads)
@@ -83,11 +90,9 @@ Identity identify(const RunOptions& options) {
   return toIdentity(answer.at("identity"));
 }
 
-// The context a case runs with; the profile is chosen as identify() chose it.
-std::unique_ptr<CaseContext> makeCaseContext(const RunOptions& options, gpu::Context* gl) {
-  std::string how;
-  return std::make_unique<CaseContext>(gl, chooseProfile(options.profile, gl->info(), how), options.outDir,
-                                       options.threads, options.allImages);
+// The context a case runs with, under the profile identify() chose.
+std::unique_ptr<CaseContext> makeCaseContext(const RunOptions& options, const Identity& identity, gpu::Context* gl) {
+  return std::make_unique<CaseContext>(gl, identity.profile, options.outDir, options.threads, options.allImages);
 }
 
 // What a case's process wrote, as the report keeps it.
@@ -182,7 +187,9 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
     out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selected << ")";
   out << " on " << identity.renderer << " (" << identity.version << ") through "
       << identity.driver.value("api", std::string("?")) << ", profile "
-      << (identity.profileName.empty() ? std::string("none: envelope oracle alone") : identity.profileName) << ", "
+      << (identity.profile ? std::string(identity.profile->name) + (identity.profile->probed ? " (probed)" : "")
+                           : std::string("none: envelope oracle alone"))
+      << ", "
       << (options.inProcess ? std::string("in this process") : std::to_string(options.jobs) + " process(es) at once")
       << std::endl;
   // What a rerun must set to get the same driver (gpu::environmentPins; all of it is in results.json).
@@ -191,6 +198,8 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   for (const auto& [k, v] : environment.items())
     if (v.is_string() && v != "(unset)") set += " " + k + "=" + v.get<std::string>();
   if (!set.empty()) out << "environment:" << set << std::endl;
+  if (const nlohmann::json& p = identity.driver.value("profile", nlohmann::json::object()); p.contains("chosen"))
+    out << "profile: " << p.at("chosen").get<std::string>() << std::endl;
 
   std::vector<std::optional<CaseResult>> slots(cases.size());
   Progress progress("voxref conform", static_cast<long>(cases.size()));
@@ -198,7 +207,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   bool complete = true;
   if (options.inProcess) {
     std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
-    const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, gl.get());
+    const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, identity, gl.get());
     for (std::size_t i = 0; i < cases.size(); ++i) {
       progress.update(done, cases[i].id);
       slots[i] = runCase(cases[i], *ctx);
@@ -228,7 +237,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
         cases.size(), pool,
         [&](std::size_t i) -> std::string {
           std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
-          const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, gl.get());
+          const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, identity, gl.get());
           return caseJson(runCase(cases[i], *ctx)).dump();
         },
         [&](std::size_t i, const isolation::ChildOutcome& o) {
@@ -260,6 +269,8 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   RunOutcome outcome;
   outcome.complete = complete;
   collect(slots, cases, outcome.results, run.notRun);
+  if (identity.profile && identity.profile->probed)
+    for (CaseResult& r : outcome.results) markProbedModelFailure(r);
   run.complete = complete;
   run.finished = utcTimestamp();
   BaselineDiff diff;
@@ -272,9 +283,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   std::map<Status, int> counts;
   for (const CaseResult& r : outcome.results) ++counts[r.status];
   for (const CaseResult& r : outcome.results)
-    if (r.status == Status::Fail || r.status == Status::Crash || r.status == Status::Timeout ||
-        r.status == Status::Warn)
-      out << "  " << name(r.status) << "  " << r.id << ": " << r.message << "\n";
+    if (r.status != Status::Pass) out << "  " << name(r.status) << "  " << r.id << ": " << r.message << "\n";
   if (!options.baseline.empty()) printBaselineDiff(out, diff, options.baseline.string());
   if (!complete)
     out << "INTERRUPTED by " << run.interruptedBy << ": partial report, " << outcome.results.size() << " of "
@@ -282,7 +291,8 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   out << "summary:";
   for (Status s : {Status::Pass, Status::Warn, Status::Fail, Status::Skip, Status::Crash, Status::Timeout})
     out << " " << counts[s] << " " << name(s);
-  out << "\nreport: " << (options.outDir / "index.html").string() << " (results.json, junit.xml beside it)\n";
+  out << "\n" << judgementLines(outcome.results);
+  out << "report: " << (options.outDir / "index.html").string() << " (results.json, junit.xml beside it)\n";
   const bool failed = counts[Status::Fail] + counts[Status::Crash] + counts[Status::Timeout] > 0;
   outcome.exitCode = !complete          ? 128 + isolation::interruptSignal()
                      : diff.regressed() ? kExitRegressed

@@ -131,7 +131,8 @@ std::string htmlCasePage(const RunInfo& run, const CaseResult& r) {
   h << pageHead(r.id + " — voxref", run) << "<p><a href=\"" << kToRoot << "index.html\">← all cases</a></p>\n<h1><code>"
     << htmlEscape(r.id) << "</code> <span id=\"case-status\" data-status=\"" << name(r.status) << "\">"
     << badge(name(r.status)) << "</span></h1>\n<p>" << htmlEscape(r.description)
-    << "</p>\n<table><tr><th>system</th><td>" << htmlEscape(r.system) << "</td></tr>";
+    << "</p>\n<table><tr><th>system</th><td>" << htmlEscape(r.system)
+    << "</td></tr><tr><th>judged on GL by</th><td id=\"judged-by\">" << name(r.judgedBy) << "</td></tr>";
   char secs[96];
   std::snprintf(secs, sizeof secs, "%.3f / %.3f / %.3f", r.secondsGl, r.secondsEmulation, r.secondsReference);
   h << "<tr><th>seconds (GL / emulation / reference)</th><td class=\"num\">" << secs << "</td></tr>";

@@ -8,6 +8,7 @@
 #include "conformance/framework/report/html_baseline.h"
 #include "conformance/framework/report/html_escape.h"
 #include "conformance/framework/report/html_page.h"
+#include "conformance/framework/report/judgement_counts.h"
 #include "emulation/profile.h"
 
 namespace voxref::conf {
@@ -44,6 +45,26 @@ void driverBlock(std::ostringstream& h, const RunInfo& run) {
     h << "</td></tr>\n";
   }
   h << "</table>\n";
+}
+
+// Per system, which oracle judged the GL output of how many cases, and how many nothing judged
+// (framework/report/judgement_counts.h).
+void judgementBlock(std::ostringstream& h, const std::vector<CaseResult>& results) {
+  h << "<h2 id=\"judgement\">What judged the GL output</h2>\n<p>A case passes only on an oracle that held the GL "
+       "output against something and could have failed it here; where none could, the case is a skip, "
+       "<q>not judged on this driver</q>, with the reason.</p>\n<table "
+       "id=\"judgement-table\"><thead><tr><th>system</th>";
+  for (const Judge k : kJudges)
+    h << "<th>" << (k == Judge::None ? std::string("not judged") : std::string(name(k))) << "</th>";
+  h << "</tr></thead><tbody>\n";
+  for (const auto& [system, s] : judgementCounts(results)) {
+    h << "<tr><td>" << htmlEscape(system) << "</td>";
+    for (const Judge k : kJudges)
+      h << "<td class=\"num\" id=\"judged-" << htmlEscape(system) << "-" << name(k) << "\">"
+        << (s.judgedBy.count(k) ? s.judgedBy.at(k) : 0) << "</td>";
+    h << "</tr>\n";
+  }
+  h << "</tbody></table>\n";
 }
 
 void summaryBlock(std::ostringstream& h, const std::vector<CaseResult>& results) {
@@ -218,6 +239,7 @@ std::string htmlIndex(const RunInfo& run, const std::vector<CaseResult>& results
   }
   driverBlock(h, run);
   summaryBlock(h, results);
+  judgementBlock(h, results);
   h << baselineSection(run.baseline);
   findingsBlock(h, run, results);
   casesBlock(h, results);

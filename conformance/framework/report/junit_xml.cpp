@@ -51,6 +51,7 @@ std::string junitXml(const std::vector<CaseResult>& results) {
     for (const CaseResult* r : cases) {
       x << "    <testcase classname=\"" << xmlEscape(system) << "\" name=\"" << xmlEscape(r->id) << "\" time=\""
         << r->secondsGl + r->secondsEmulation + r->secondsReference << "\">\n";
+      x << "      <properties><property name=\"judged_by\" value=\"" << name(r->judgedBy) << "\"/></properties>\n";
       const std::string msg = xmlEscape(r->message);
       switch (r->status) {
         case Status::Fail:

@@ -1,5 +1,7 @@
 #include "conformance/framework/report/results_json.h"
 
+#include "conformance/framework/report/judgement_counts.h"
+
 #include <cmath>
 #include <map>
 
@@ -8,7 +10,8 @@ namespace voxref::conf {
 nlohmann::json caseJson(const CaseResult& r) {
   nlohmann::json oracles = nlohmann::json::object();
   for (const OracleResult& o : r.oracles)
-    oracles[o.oracle] = {{"verdict", name(o.verdict)}, {"summary", o.summary}, {"figures", o.figures}};
+    oracles[o.oracle] = {
+        {"verdict", name(o.verdict)}, {"summary", o.summary}, {"figures", o.figures}, {"judges", name(o.judges)}};
   nlohmann::json findings = nlohmann::json::array();
   for (const Finding& f : r.findings)
     findings.push_back({{"id", f.id}, {"description", f.description}, {"figures", f.figures}});
@@ -35,6 +38,8 @@ nlohmann::json caseJson(const CaseResult& r) {
           {"description", r.description},
           {"status", name(r.status)},
           {"message", r.message},
+          {"judged_by", name(r.judgedBy)},
+          {"probed_model_failed", r.probedModelFailed},
           {"stderr", r.stderrText},
           {"oracles", oracles},
           {"effects", r.effects},
@@ -68,6 +73,7 @@ nlohmann::json resultsJson(const RunInfo& run, const std::vector<CaseResult>& re
           {"baseline", run.baseline},
           {"driver", run.driver},
           {"summary", counts},
+          {"judgement", judgementJson(results)},
           {"cases", cases}};
 }
 

@@ -48,6 +48,17 @@ int integer(const nlohmann::json& j, const char* key, const std::string& where) 
   return static_cast<int>(v.get<std::int64_t>());
 }
 
+// What judged a case or an oracle (case.h, Judge); absent in results.json of earlier versions: none.
+Judge optionalJudge(const nlohmann::json& j, const char* key, const std::string& where) {
+  const auto it = j.find(key);
+  if (it == j.end()) return Judge::None;
+  const auto judge = it->is_string() ? parseJudge(it->get<std::string>()) : std::nullopt;
+  if (!judge)
+    throw ResultsFormatError(where + "." + key +
+                             ": expected one of none, exact, envelope, fetch, iso_geometry, prediction, gl_behaviour");
+  return *judge;
+}
+
 }  // namespace
 
 CaseResult caseFromJson(const nlohmann::json& j) {
@@ -60,6 +71,11 @@ CaseResult caseFromJson(const nlohmann::json& j) {
   if (!status) throw ResultsFormatError(where + ".status: not one of pass, warn, fail, skip, crash, timeout");
   r.status = *status;
   r.message = text(j, "message", where);
+  r.judgedBy = optionalJudge(j, "judged_by", where);
+  if (const auto it = j.find("probed_model_failed"); it != j.end()) {  // absent in earlier versions
+    if (!it->is_boolean()) throw ResultsFormatError(where + ".probed_model_failed: expected true or false");
+    r.probedModelFailed = it->get<bool>();
+  }
   r.stderrText = optionalText(j, "stderr");
   const nlohmann::json& oracles = field(j, "oracles", where);
   if (!oracles.is_object()) throw ResultsFormatError(where + ".oracles: expected an object");
@@ -67,7 +83,8 @@ CaseResult caseFromJson(const nlohmann::json& j) {
     const std::string at = where + ".oracles." + key;
     const auto verdict = parseVerdict(text(o, "verdict", at));
     if (!verdict) throw ResultsFormatError(at + ".verdict: unknown");
-    r.oracles.push_back({key, *verdict, text(o, "summary", at), field(o, "figures", at)});
+    r.oracles.push_back(
+        {key, *verdict, text(o, "summary", at), field(o, "figures", at), optionalJudge(o, "judges", at)});
   }
   const nlohmann::json& effects = field(j, "effects", where);
   if (!effects.is_array()) throw ResultsFormatError(where + ".effects: expected an array");

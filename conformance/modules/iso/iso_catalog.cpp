@@ -145,7 +145,8 @@ OracleResult occlusionOracle(const FramesTally& t, bool cullEveryTested) {
               std::to_string(t.tests) + " occlusion tests; culled " + std::to_string(t.culledInvisible) + " of " +
               std::to_string(t.invisible) + " invisible candidates (" +
               std::to_string(std::lround(100.0 * efficiency)) + " %)",
-          {{"false_culls", t.falseCulls}, {"efficiency", efficiency}, {"tests", t.tests}}};
+          {{"false_culls", t.falseCulls}, {"efficiency", efficiency}, {"tests", t.tests}},
+          Judge::IsoGeometry};
 }
 
 // GL draws each frame's mesh as Embree sees it (mesh_image_compare.h); `driverNote` names a driver
@@ -163,7 +164,8 @@ OracleResult meshImageOracle(const FramesTally& t, const std::string& driverNote
            {"depth_failures", t.depthFail},
            {"visibility_failures", t.visibilityFail},
            {"same_triangle_pixels", t.same},
-           {"other_triangle_allowed", t.otherAllowed}}};
+           {"other_triangle_allowed", t.otherAllowed}},
+          Judge::IsoGeometry};
 }
 
 // Occlusion and mesh-image oracles over every frame of a scene.

@@ -215,6 +215,7 @@ OracleResult exactOracle(const CombinationPlanes& r, const ref::Image* glImage, 
     o.summary = !r.gl ? "GL not run: " + r.glNotRun : "emulation not run: " + r.emulationNotRun;
     return o;
   }
+  o.judges = Judge::Exact;
   const CodeComparison c = compareCodes(*r.gl, r.emulated->planes, &r.emulated->unmodelled);
   const ImageComparison img = compareImages(*glImage, *emuImage);
   const bool unorm = ref::unormBits(r.gl->format) != 0;
@@ -271,6 +272,8 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
   o.figures["widest_allowed"] = r.envelopeWidest;
   o.figures["reference_spread"] = spread;
   o.figures["blind"] = r.envelopeWidest >= spread;
+  // It judges GL only where GL ran and its intervals can tell GL's output from a constant.
+  if (r.envelopeJudged == "gl" && r.envelopeWidest < spread) o.judges = Judge::Envelope;
   if (!r.departures.empty()) {
     o.figures["unexplained_failures"] = r.unexplainedFail;
     o.figures["unexplained_warnings"] = r.unexplainedWarn;

@@ -95,20 +95,22 @@ CaseResult everyUnscaledOrderFails(CaseContext& ctx) {
                       {"mismatched_pixels", mismatchedPixels},
                       {"max_abs_diff_lsb", maxDistance},
                       {"orders", orders}}};
+  exact.judges = Judge::Exact;
   if (!ctx.profile()) exact = {"exact", Verdict::NotRun, "no precision profile for this driver", {}};
   // The derivation predicts an error of at least 0.6 for every order; anything above the
   // quantization bound already shows the clamping failure.
-  OracleResult paper{"ideal",
-                     correctOrders == 0 ? Verdict::Pass : Verdict::Fail,
-                     std::to_string(orders - correctOrders) + " of " + std::to_string(orders) +
-                         " orders wrong beyond the quantization bound; the least wrong is off by " +
-                         std::to_string(smallestFailure),
-                     {{"orders", orders},
-                      {"orders_correct", correctOrders},
-                      {"smallest_max_abs_error", smallestFailure},
-                      {"quantization_bound", bound},
-                      {"expected_smallest_error", 0.6},
-                      {"per_order", perOrder}}};
+  OracleResult paper{
+      "ideal",
+      correctOrders == 0 ? Verdict::Pass : Verdict::Fail,
+      std::to_string(orders - correctOrders) + " of " + std::to_string(orders) +
+          " orders wrong beyond the quantization bound; the least wrong is off by " + std::to_string(smallestFailure),
+      {{"orders", orders},
+       {"orders_correct", correctOrders},
+       {"smallest_max_abs_error", smallestFailure},
+       {"quantization_bound", bound},
+       {"expected_smallest_error", 0.6},
+       {"per_order", perOrder}},
+      Judge::Prediction};  // GL's read-back against the paper's prediction: it fails a driver that does not clamp
   result.oracles = {exact, paper};
   result.figures = {{"orders", orders}, {"scene", toJson(scene)}};
   concludeFromOracles(result);
@@ -126,7 +128,8 @@ CaseResult scaledIsCorrect(CaseContext& ctx) {
       {"bound",
        err <= bound ? Verdict::Pass : Verdict::Fail,
        "max error " + std::to_string(err) + " against the quantization bound " + std::to_string(bound),
-       {{"max_abs_error", err}, {"quantization_bound", bound}}});
+       {{"max_abs_error", err}, {"quantization_bound", bound}},
+       Judge::Prediction});
   concludeFromOracles(result);
   return result;
 }

@@ -72,7 +72,8 @@ CaseResult capacityExceeded(CaseContext& ctx) {
     r.oracles.push_back({"gl",
                          glOk ? Verdict::Pass : Verdict::Fail,
                          glOk ? "GlUnsupported: " + glError : "the GL path did not refuse the texture",
-                         {}});
+                         {},
+                         Judge::GlBehaviour});
   }
   concludeFromOracles(r);
   return r;

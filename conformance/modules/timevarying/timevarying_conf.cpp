@@ -245,7 +245,8 @@ OracleResult exactOracle(const StepTally& t, std::size_t steps, bool haveProfile
            {"mismatched_samples", t.mismatched},
            {"mismatched_pixels", t.mismatched},
            {"max_abs_diff_lsb", t.maxExactDiff},
-           {"steps", steps}}};
+           {"steps", steps}},
+          Judge::Exact};
 }
 
 OracleResult fetchOracle(const FetchCounts& f, const TimeVaryingExpectation& expect, bool haveProfile) {
