@@ -97,15 +97,21 @@ ProbedProfile profileFromFingerprint(const DriverFingerprint& f, const std::stri
   return out;
 }
 
+std::size_t framesNotReproduced(const ref::ProbeDesign& design, std::span<const ref::ProbeFrame> frames,
+                                const emu::PrecisionProfile& profile) {
+  const std::vector<ref::ProbeFrame> emulated = emu::emulateProbeFrames(design, profile);
+  std::size_t differing = emulated.size() > frames.size() ? emulated.size() - frames.size() : 0;
+  for (std::size_t i = 0; i < frames.size(); ++i) differing += i >= emulated.size() || !(emulated[i] == frames[i]);
+  return differing;
+}
+
 ProbedProfile confirmedProbedProfile(const ref::ProbeDesign& design, std::span<const ref::ProbeFrame> frames,
                                      const DriverFingerprint& fingerprint, const std::string& name,
                                      const std::string& renderer) {
   ProbedProfile out = profileFromFingerprint(fingerprint, name, renderer);
   if (!out.profile) return out;
-  const std::vector<ref::ProbeFrame> emulated = emu::emulateProbeFrames(design, *out.profile);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < frames.size(); ++i) differing += i >= emulated.size() || !(emulated[i] == frames[i]);
-  if (differing == 0 && emulated.size() == frames.size()) return out;
+  const std::size_t differing = framesNotReproduced(design, frames, *out.profile);
+  if (differing == 0) return out;
   out.problem = "its emulation differs from the driver in " + std::to_string(differing) + " of " +
                 std::to_string(frames.size()) + " probe frames";
   out.profile.reset();

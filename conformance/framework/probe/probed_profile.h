@@ -33,6 +33,10 @@ struct ProbedProfile {
 ProbedProfile profileFromFingerprint(const DriverFingerprint& fingerprint, const std::string& name,
                                      const std::string& renderer);
 
+// How many of the driver's probe frames the profile's emulation does not reproduce bit for bit.
+std::size_t framesNotReproduced(const ref::ProbeDesign& design, std::span<const ref::ProbeFrame> frames,
+                                const emu::PrecisionProfile& profile);
+
 // profileFromFingerprint, kept only when its emulation reproduces every probe frame bit for bit
 // (else `problem` says how many frames differ): the profile a run may judge exactly against.
 ProbedProfile confirmedProbedProfile(const ref::ProbeDesign& design, std::span<const ref::ProbeFrame> frames,

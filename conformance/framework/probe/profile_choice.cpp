@@ -31,6 +31,14 @@ Probed probe(gpu::Context& gl) {
   return p;
 }
 
+// Records the probed profile a run is judged against, and what it assumes, in the probe's report.
+void recordProbedProfile(ProfileChoice& c, const ProbedProfile& built, const char* chosenBy) {
+  c.profile = &keepProfile(*built.profile);
+  c.probe["chosen_by"] = chosenBy;
+  c.probe["probed_profile"] = profileToJson(*c.profile);
+  c.probe["assumed"] = built.assumed;
+}
+
 std::string frameCount(const Probed& p) { return std::to_string(p.frames.size()) + " probe frames"; }
 
 // auto: the profile GL_RENDERER and the environment name, where the probe confirms it; else the
@@ -40,7 +48,7 @@ ProfileChoice chooseByProbe(gpu::Context& gl, const emu::PrecisionProfile* named
   if (named) {  // the common case first: only the named profile's emulation (frames equal: every property equal)
     const ref::ProbeDesign& design = ref::probeDesign();
     const std::vector<ref::ProbeFrame> frames = gpu::renderProbeFramesGl(gl, design);
-    if (emu::emulateProbeFrames(design, *named) == frames) {
+    if (framesNotReproduced(design, frames, *named) == 0) {
       c.profile = named;
       c.how = namedHow + "; the probe confirms it: all " + std::to_string(frames.size()) +
               " probe frames bit-identical to its emulation";
@@ -68,13 +76,10 @@ ProfileChoice chooseByProbe(gpu::Context& gl, const emu::PrecisionProfile* named
   const ProbedProfile built =
       confirmedProbedProfile(ref::probeDesign(), p.frames, p.fingerprint, "probed", gl.info().renderer);
   if (built.profile) {
-    c.profile = &keepProfile(*built.profile);
+    recordProbedProfile(c, built, "probe: probed profile");
     c.how = why + "no known profile reproduces the probe (" + verdictLine(p.comparisons) +
             "); judged against a profile built from the " + std::to_string(p.fingerprint.properties.size()) +
             " probed properties, whose emulation reproduces all " + frameCount(p);
-    c.probe["chosen_by"] = "probe: probed profile";
-    c.probe["probed_profile"] = profileToJson(*c.profile);
-    c.probe["assumed"] = built.assumed;
     return c;
   }
   c.how = why + "no known profile reproduces the probe (" + verdictLine(p.comparisons) +
@@ -120,10 +125,7 @@ ProfileChoice chooseFromFile(gpu::Context& gl, const std::filesystem::path& path
     for (const std::string& m : moved) list += (list.empty() ? "" : "; ") + m;
     throw UsageError("the driver no longer probes as " + path.string() + ": " + list);
   }
-  const std::vector<ref::ProbeFrame> emulated = emu::emulateProbeFrames(ref::probeDesign(), *profile);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < p.frames.size(); ++i) differing += i >= emulated.size() || !(emulated[i] == p.frames[i]);
-  if (differing != 0)
+  if (const std::size_t differing = framesNotReproduced(ref::probeDesign(), p.frames, *profile); differing != 0)
     throw UsageError("the driver no longer probes as " + path.string() + ": its profile's emulation differs in " +
                      std::to_string(differing) + " of " + frameCount(p));
   ProfileChoice c;
@@ -146,16 +148,11 @@ ProfileChoice chooseRunProfile(const std::string& choice, gpu::Context& gl) {
     if (!built.profile)
       throw UsageError("--profile probed: the probe cannot build a profile of this driver: " + built.problem);
     ProfileChoice c;
-    c.profile = &keepProfile(*built.profile);
+    c.probe = probeJson(p.fingerprint, p.comparisons);
+    recordProbedProfile(c, built, "probe: probed profile (asked for)");
     c.how = "named on the command line: probed, a profile built from the " +
             std::to_string(p.fingerprint.properties.size()) +
-            " probed properties (whatever GL_RENDERER names), whose "
-            "emulation reproduces all " +
-            frameCount(p);
-    c.probe = probeJson(p.fingerprint, p.comparisons);
-    c.probe["chosen_by"] = "probe: probed profile (asked for)";
-    c.probe["probed_profile"] = profileToJson(*c.profile);
-    c.probe["assumed"] = built.assumed;
+            " probed properties (whatever GL_RENDERER names), whose emulation reproduces all " + frameCount(p);
     return c;
   }
   ProfileChoice c;
