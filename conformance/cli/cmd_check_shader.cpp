@@ -7,6 +7,7 @@
 #include "conformance/cli/commands.h"
 #include "conformance/framework/case_context.h"
 #include "conformance/framework/driver_info.h"
+#include "conformance/framework/probe/profile_choice.h"
 #include "conformance/framework/report/report_files.h"
 #include "conformance/framework/runner.h"
 #include "conformance/io/atomic_file.h"
@@ -125,13 +126,10 @@ int runCheckShader(const CheckShaderOptions& o) {
     std::cerr << "voxref: no GL context for --driver " << o.driver << ": " << e.what() << "\n";
     return 2;
   }
-  std::string how;
-  const emu::PrecisionProfile* profile = nullptr;
-  try {
-    profile = conf::chooseProfile(o.profile, gl->info(), how);
-  } catch (const std::invalid_argument& e) {
-    throw conf::UsageError(e.what());
-  }
+  // As conform chooses it (auto confirms by the probe; probed; FILE.json): one rule for both.
+  const conf::ProfileChoice choice = conf::chooseRunProfile(o.profile, *gl);
+  const emu::PrecisionProfile* profile = choice.profile;
+  const std::string& how = choice.how;
 
   std::cout << "voxref check-shader: " << c.id << " on " << gl->info().renderer << " (" << gl->info().version
             << "), profile " << (profile ? std::string(profile->name) : std::string("none: envelope oracle alone"))
@@ -189,7 +187,9 @@ Subcommand addCheckShaderCommand(CLI::App& app, const std::string& invocation) {
   sub->add_flag("--print-interface", o->printInterface,
                 "print the case's stage: its interface and the built-in shader");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
-  sub->add_option("--profile", o->profile, "auto or a precision profile name")->default_val("auto");
+  sub->add_option("--profile", o->profile,
+                  "auto, probed, envelope, a profile name or a driver file FILE.json (as conform)")
+      ->default_val("auto");
   sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
       ->default_val("voxref-check-shader");
   sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
