@@ -58,10 +58,16 @@ void printProbeReport(std::ostream& out, const DriverFingerprint& measured,
   out << verdictLine(comparisons) << "\n";
 }
 
-nlohmann::json probeJson(const DriverFingerprint& measured, const std::vector<ProfileComparison>& comparisons) {
-  nlohmann::json props = nlohmann::json::array(), profiles = nlohmann::json::array(), matched = nlohmann::json::array();
+nlohmann::json propertiesJson(const DriverFingerprint& measured) {
+  nlohmann::json props = nlohmann::json::array();
   for (const InferredProperty& p : measured.properties)
     props.push_back({{"id", p.id}, {"value", p.value}, {"evidence", p.evidence}});
+  return props;
+}
+
+nlohmann::json probeJson(const DriverFingerprint& measured, const std::vector<ProfileComparison>& comparisons) {
+  nlohmann::json props = propertiesJson(measured), profiles = nlohmann::json::array(),
+                 matched = nlohmann::json::array();
   for (const ProfileComparison& c : comparisons) {
     profiles.push_back({{"name", c.profile->name},
                         {"matches", c.matches()},

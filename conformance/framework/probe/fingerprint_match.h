@@ -40,6 +40,9 @@ std::string verdictLine(const std::vector<ProfileComparison>& comparisons);
 void printProbeReport(std::ostream& out, const DriverFingerprint& measured,
                       const std::vector<ProfileComparison>& comparisons);
 
+// [{id, value, evidence}]: the measured properties, as probeJson and the run's report give them.
+nlohmann::json propertiesJson(const DriverFingerprint& measured);
+
 // {"properties": [{id, value, evidence}], "profiles": [{name, matches, differences, frames_identical}],
 //  "matched": [names]}
 nlohmann::json probeJson(const DriverFingerprint& measured, const std::vector<ProfileComparison>& comparisons);

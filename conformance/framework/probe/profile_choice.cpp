@@ -22,14 +22,17 @@ struct Probed {
   std::vector<ProfileComparison> comparisons;
 };
 
-Probed probe(gpu::Context& gl) {
+// The fingerprint of frames the driver rendered, and every known profile held against it.
+Probed judgeFrames(std::vector<ref::ProbeFrame> frames) {
   const ref::ProbeDesign& design = ref::probeDesign();
   Probed p;
-  p.frames = gpu::renderProbeFramesGl(gl, design);
+  p.frames = std::move(frames);
   p.fingerprint = inferFingerprint(design, p.frames);
   p.comparisons = compareWithKnownProfiles(design, p.fingerprint, p.frames);
   return p;
 }
+
+Probed probe(gpu::Context& gl) { return judgeFrames(gpu::renderProbeFramesGl(gl, ref::probeDesign())); }
 
 // Records the probed profile a run is judged against, and what it assumes, in the probe's report.
 void recordProbedProfile(ProfileChoice& c, const ProbedProfile& built, const char* chosenBy) {
@@ -45,21 +48,20 @@ std::string frameCount(const Probed& p) { return std::to_string(p.frames.size())
 // probe decides. `named` is that profile (nullptr: none), `namedHow` why it was named.
 ProfileChoice chooseByProbe(gpu::Context& gl, const emu::PrecisionProfile* named, const std::string& namedHow) {
   ProfileChoice c;
+  const ref::ProbeDesign& design = ref::probeDesign();
+  std::vector<ref::ProbeFrame> frames = gpu::renderProbeFramesGl(gl, design);
   if (named) {  // the common case first: only the named profile's emulation (frames equal: every property equal)
-    const ref::ProbeDesign& design = ref::probeDesign();
-    const std::vector<ref::ProbeFrame> frames = gpu::renderProbeFramesGl(gl, design);
     if (framesNotReproduced(design, frames, *named) == 0) {
       c.profile = named;
       c.how = namedHow + "; the probe confirms it: all " + std::to_string(frames.size()) +
               " probe frames bit-identical to its emulation";
-      nlohmann::json props = nlohmann::json::array();
-      for (const InferredProperty& q : inferFingerprint(design, frames).properties)
-        props.push_back({{"id", q.id}, {"value", q.value}, {"evidence", q.evidence}});
-      c.probe = {{"properties", props}, {"confirmed", named->name}, {"chosen_by", "name, confirmed by the probe"}};
+      c.probe = {{"properties", propertiesJson(inferFingerprint(design, frames))},
+                 {"confirmed", named->name},
+                 {"chosen_by", "name, confirmed by the probe"}};
       return c;
     }
   }
-  const Probed p = probe(gl);
+  const Probed p = judgeFrames(std::move(frames));  // rendered once
   c.probe = probeJson(p.fingerprint, p.comparisons);
   const std::string properties = std::to_string(p.fingerprint.properties.size()) + " properties";
   const std::string why =
