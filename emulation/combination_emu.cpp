@@ -6,14 +6,15 @@
 #include "emulation/framebuffer_emu.h"
 #include "emulation/texture_sampler_emu.h"
 #include "reference/common/parallel.h"
+#include "reference/common/rounding.h"
 
 namespace voxref::emu {
 
 float combinationTexCoord(float p, int level, int extent, int origin) {
-  const float node = p * std::ldexp(1.0f, level);            // exact: a power-of-two scale
-  const float centred = node + 0.5f;                         // exact on the plane-frame lattice
-  const float local = centred - static_cast<float>(origin);  // exact: an integer below 2^13
-  return local / static_cast<float>(extent);                 // the one rounding of the address
+  const float node = p * static_cast<float>(ref::powerOfTwo(level));  // exact: a power-of-two scale
+  const float centred = node + 0.5f;                                  // exact on the plane-frame lattice
+  const float local = centred - static_cast<float>(origin);           // exact: an integer below 2^13
+  return local / static_cast<float>(extent);                          // the one rounding of the address
 }
 
 std::vector<Effect> combinationEffects(const ref::CombinationTextures& textures, const ref::SamplerState& sampler,
@@ -68,8 +69,9 @@ EmulatedPlanes emulateCombination(const ref::CombinationTextures& textures, cons
           for (const ref::CombinationPass& pass : textures.passes) {
             const ref::GridTexture& t = textures.textures[pass.texture];
             // The brick's discard test on c = p * 2^l (exact), as the shader does it.
-            if (!ref::servesCell(t, p.x * std::ldexp(1.0f, t.levels[0]), p.y * std::ldexp(1.0f, t.levels[1]),
-                                 p.z * std::ldexp(1.0f, t.levels[2])))
+            if (!ref::servesCell(t, p.x * static_cast<float>(ref::powerOfTwo(t.levels[0])),
+                                 p.y * static_cast<float>(ref::powerOfTwo(t.levels[1])),
+                                 p.z * static_cast<float>(ref::powerOfTwo(t.levels[2]))))
               continue;
             const float src = samplers[pass.texture].sampleRed(
                 combinationTexCoord(p.x, t.levels[0], t.dims[0], t.origin[0]),

@@ -53,12 +53,12 @@ CombinationEnvelope::CombinationEnvelope(const ref::CombinationTextures& texture
 }
 
 Interval CombinationEnvelope::storeFixedPoint(double lo, double hi) const {
-  const double m = std::ldexp(1.0, ref::unormBits(format_)) - 1.0;
+  const double m = ref::powerOfTwo(ref::unormBits(format_)) - 1.0;
   lo = std::clamp(lo, 0.0, 1.0);
   hi = std::clamp(hi, 0.0, 1.0);
   // Either neighbouring code: floor and ceil, outward by 2^-40 against double rounding.
-  const double clo = std::max(0.0, std::floor(lo * m * (1.0 - std::ldexp(1.0, -40))));
-  const double chi = std::min(m, std::ceil(hi * m * (1.0 + std::ldexp(1.0, -40))));
+  const double clo = std::max(0.0, std::floor(lo * m * (1.0 - ref::powerOfTwo(-40))));
+  const double chi = std::min(m, std::ceil(hi * m * (1.0 + ref::powerOfTwo(-40))));
   return {clo / m, chi / m};
 }
 
@@ -76,7 +76,8 @@ Interval CombinationEnvelope::at(int i, int j, int k, const EnvelopePrecision& p
   Interval dst{0.0, 0.0};
   for (const ref::CombinationPass& pass : textures_->passes) {
     const ref::GridTexture& t = textures_->textures[pass.texture];
-    if (!ref::servesCell(t, std::ldexp(p.x, t.levels[0]), std::ldexp(p.y, t.levels[1]), std::ldexp(p.z, t.levels[2])))
+    if (!ref::servesCell(t, ref::scaleByPowerOfTwo(p.x, t.levels[0]), ref::scaleByPowerOfTwo(p.y, t.levels[1]),
+                         ref::scaleByPowerOfTwo(p.z, t.levels[2])))
       continue;
     const glm::dvec3 u{ref::textureCoordinate(p.x, t.levels[0], t.dims[0], t.origin[0]),
                        ref::textureCoordinate(p.y, t.levels[1], t.dims[1], t.origin[1]),
@@ -91,7 +92,7 @@ Interval CombinationEnvelope::at(int i, int j, int k, const EnvelopePrecision& p
     const bool add = pass.equation == ref::BlendEquation::FuncAdd;
     const double lo = add ? dst.lo + src.lo : dst.lo - src.hi;
     const double hi = add ? dst.hi + src.hi : dst.hi - src.lo;
-    const double pad = std::ldexp(std::max(std::fabs(lo), std::fabs(hi)), -40);
+    const double pad = ref::scaleByPowerOfTwo(std::max(std::fabs(lo), std::fabs(hi)), -40);
     dst = fixedPoint ? storeFixedPoint(lo - pad, hi + pad) : storeFloat(lo - pad, hi + pad);
   }
   return dst;

@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "reference/common/rounding.h"
+
 namespace voxref::emu {
 namespace {
 
@@ -47,10 +49,10 @@ double float32Above(double x) {
 double ulpF32(double x) {
   // tcu::FloatFormat::ulp (framework/common/tcuFloatFormat.cpp) for binary32: minExp -126, 23
   // fraction bits.
-  if (x == 0.0) return std::ldexp(1.0, -149);
+  if (x == 0.0) return ref::powerOfTwo(-149);
   int e = std::ilogb(std::fabs(x));             // |x| in [2^e, 2^(e+1))
-  if (std::fabs(x) == std::ldexp(1.0, e)) --e;  // Harrison's ULP at a binade boundary
-  return std::ldexp(1.0, std::max(e, -126) - 23);
+  if (std::fabs(x) == ref::powerOfTwo(e)) --e;  // Harrison's ULP at a binade boundary
+  return ref::powerOfTwo(std::max(e, -126) - 23);
 }
 
 Interval unboundedF32() { return {-kInf, kInf}; }
@@ -75,7 +77,7 @@ Interval mulF32(const Interval& a, const Interval& b) {
 
 Interval divF32(const Interval& a, const Interval& b, double ulps) {
   if (!isBounded(a) || !isBounded(b)) return unboundedF32();
-  const double minDivisor = std::ldexp(1.0, -126), maxDivisor = std::ldexp(1.0, 126);
+  const double minDivisor = ref::powerOfTwo(-126), maxDivisor = ref::powerOfTwo(126);
   const bool positive = b.lo >= minDivisor && b.hi <= maxDivisor, negative = b.hi <= -minDivisor && b.lo >= -maxDivisor;
   if (!positive && !negative) return unboundedF32();  // outside the range GLSL gives a precision for
   // a / b is monotone in each argument on this box: its extremes lie at the corners.
@@ -85,7 +87,7 @@ Interval divF32(const Interval& a, const Interval& b, double ulps) {
   const double maxAbs = std::max(std::fabs(qlo), std::fabs(qhi));
   const double u = qlo == qhi      ? ulpF32(qlo)
                    : maxAbs == 0.0 ? ulpF32(0.0)
-                                   : std::ldexp(1.0, std::max(std::ilogb(maxAbs), -126) - 23);
+                                   : ref::powerOfTwo(std::max(std::ilogb(maxAbs), -126) - 23);
   // Allowed: the float32 values within ulps * u of the exact quotient. The double quotient and the
   // subtraction are each off by at most half a double ULP: two double steps outward cover both.
   const double lo = std::nextafter(std::nextafter(qlo - ulps * u, -kInf), -kInf);
@@ -109,7 +111,7 @@ std::vector<Interval> modF32(const Interval& x, const Interval& y, double divisi
 }
 
 Interval unormToFloatF32(std::uint32_t code, int bits, double divisionUlps) {
-  const double maxCode = std::ldexp(1.0, bits) - 1.0;
+  const double maxCode = ref::powerOfTwo(bits) - 1.0;
   if (code == 0) return {0.0, 0.0};
   if (code >= maxCode) return {1.0, 1.0};
   const double c = static_cast<double>(code);
@@ -117,7 +119,7 @@ Interval unormToFloatF32(std::uint32_t code, int bits, double divisionUlps) {
 }
 
 Interval unormCodes(const Interval& value, int bits) {
-  const double m = std::ldexp(1.0, bits) - 1.0;
+  const double m = ref::powerOfTwo(bits) - 1.0;
   if (!isBounded(value)) return {0.0, m};
   const double lo = std::clamp(value.lo, 0.0, 1.0), hi = std::clamp(value.hi, 0.0, 1.0);
   // A float32 times 2^b - 1 (b <= 24) is exact in double, so floor and ceil are exact.

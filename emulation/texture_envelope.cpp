@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "reference/common/rounding.h"
 #include "reference/common/texel_format.h"
 
 namespace voxref::emu {
@@ -13,7 +14,7 @@ double floatingPointError(double value, int accurateBits) {
   if (value == 0.0) return 0.0;
   int e;
   std::frexp(std::fabs(value), &e);  // |value| in [2^(e-1), 2^e)
-  return (std::ldexp(1.0, 23 - accurateBits) - 1.0) * std::ldexp(1.0, (e - 1) - 23);
+  return (ref::powerOfTwo(23 - accurateBits) - 1.0) * ref::powerOfTwo((e - 1) - 23);
 }
 
 double fixedPointError(int accurateBits) { return floatingPointError(1.0, accurateBits); }
@@ -47,7 +48,7 @@ double TextureEnvelope::texel(int x, int y, int z) const {
 
 int TextureEnvelope::candidates(double u, int n, const EnvelopePrecision& p, Candidate out[4]) const {
   // The shader's division may be 2.5 ULP (float32) off, the texture unit keeps coordBits.
-  const double shaderErr = p.divisionUlps * std::ldexp(1.0, std::ilogb(u == 0.0 ? 1.0 : u) - 23);
+  const double shaderErr = p.divisionUlps * ref::powerOfTwo(std::ilogb(u == 0.0 ? 1.0 : u) - 23);
   const double coordErr = shaderErr + floatingPointError(u, p.coordBits);
   const double uvwErr = fixedPointError(p.uvwBits);
   const double lo = (u - coordErr) * n - uvwErr, hi = (u + coordErr) * n + uvwErr;
@@ -91,7 +92,7 @@ Interval TextureEnvelope::lookup(const glm::dvec3& u, const EnvelopePrecision& p
                         l(wy, l(wx, v[1][0][0], v[1][0][1]), l(wx, v[1][1][0], v[1][1][1]))));
             }
       }
-  const double pad = std::ldexp(std::max(std::fabs(out.lo), std::fabs(out.hi)), -40);
+  const double pad = ref::scaleByPowerOfTwo(std::max(std::fabs(out.lo), std::fabs(out.hi)), -40);
   return {out.lo - pad, out.hi + pad};
 }
 

@@ -78,7 +78,8 @@ BenchTable combinationTable(const BenchOptions& o, const emu::PrecisionProfile& 
   const std::size_t perRank[3] = {o.quick ? 2u : 4u, o.quick ? 1u : 3u, o.quick ? 1u : 3u};
   std::size_t taken[3] = {0, 0, 0};
   for (std::size_t k = 0; k < candidates.size(); ++k) {
-    const auto& [caseId, scene] = candidates[k];
+    const auto& caseId = candidates[k].first;
+    const auto& scene = candidates[k].second;  // not a structured binding: clang 14 cannot capture one
     if (seen.size() >= cap) break;
     if (taken[rankOf[k]] >= perRank[rankOf[k]]) continue;
     const struct { std::string id; } c{caseId};

@@ -3,6 +3,10 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
+#endif
+
 namespace voxref::conf {
 
 CpuFlags detectCpuFlags() {
@@ -13,7 +17,10 @@ CpuFlags detectCpuFlags() {
   f.sse4_1 = __builtin_cpu_supports("sse4.1");
   f.avx2 = __builtin_cpu_supports("avx2");
   f.fma = __builtin_cpu_supports("fma");
-  f.f16c = __builtin_cpu_supports("f16c");
+  // F16C: CPUID leaf 1, ECX bit 29 (Intel SDM vol. 2A, CPUID), usable where the OS saves the AVX
+  // state; read directly, as clang has no "f16c" for __builtin_cpu_supports.
+  unsigned a = 0, b = 0, c = 0, d = 0;
+  f.f16c = __get_cpuid(1, &a, &b, &c, &d) && (c & (1u << 29)) && __builtin_cpu_supports("avx");
 #endif
   return f;
 }

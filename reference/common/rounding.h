@@ -7,6 +7,8 @@
 // infinities, which are documented per function.
 #pragma once
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
 
 namespace voxref::ref {
@@ -28,6 +30,20 @@ std::uint16_t halfFromDouble(double x);
 
 // The exact value of binary16 bits as a double.
 double halfToDouble(std::uint16_t h);
+
+// 2^e: the value std::ldexp(1.0, e) returns, for every int e. Built from its bits where 2^e is a
+// normal double (e in -1022..1023), without the libm call the envelopes made once per operation.
+inline double powerOfTwo(int e) {
+  if (e < -1022 || e > 1023) return std::ldexp(1.0, e);  // subnormal, zero or infinity
+  return std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+}
+
+// x * 2^e: the value std::ldexp(x, e) returns, for every x and e. Where 2^e is a normal double the
+// product is the exact x * 2^e rounded once, as ldexp rounds it.
+inline double scaleByPowerOfTwo(double x, int e) {
+  if (e < -1022 || e > 1023) return std::ldexp(x, e);
+  return x * powerOfTwo(e);
+}
 
 // True when `x` is an integer multiple of 2^-exponent2 (exponent2 may be negative).
 bool isMultipleOfPowerOfTwo(double x, int exponent2);

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/common/rounding.h"
+
 namespace voxref::ref {
 
 std::vector<ComponentGridShape> combinationGridShapes(int n) {
@@ -50,7 +52,7 @@ Cell cellOf(const Levels3& levels, glm::dvec3 p) {
   const double c[3] = {std::clamp(p.x, 0.0, 1.0), std::clamp(p.y, 0.0, 1.0), std::clamp(p.z, 0.0, 1.0)};
   Cell cell;
   for (int a = 0; a < 3; ++a) {
-    const double t = std::ldexp(c[a], levels[a]);  // exact
+    const double t = scaleByPowerOfTwo(c[a], levels[a]);  // exact
     cell.i0[a] = std::min(static_cast<int>(std::floor(t)), (1 << levels[a]) - 1);
     cell.w[a] = t - cell.i0[a];
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "reference/common/rounding.h"
 #include "reference/common/texel_format.h"
 
 namespace voxref::ref {
@@ -28,7 +29,7 @@ int textureExtent(int level, TextureSizing sizing) {
 }
 
 double textureCoordinate(double p, int level, int extent, int origin) {
-  return (std::ldexp(p, level) + 0.5 - origin) / extent;
+  return (scaleByPowerOfTwo(p, level) + 0.5 - origin) / extent;
 }
 
 bool servesCell(const GridTexture& b, double cx, double cy, double cz) {

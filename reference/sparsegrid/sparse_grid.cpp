@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/common/rounding.h"
 #include "reference/sparsegrid/hierarchize.h"
 
 namespace voxref::ref {
@@ -18,12 +19,12 @@ HatTerms hatTermsAt(int level, double x) {
     return h;
   }
   // Eq. 2: centre m = (2j + 1) h_l, support [m - h_l, m + h_l], h_l = 2^-l.
-  const double scaled = std::ldexp(x, level);  // x * 2^l, exact
+  const double scaled = scaleByPowerOfTwo(x, level);  // x * 2^l, exact
   const int last = (1 << (level - 1)) - 1;
   const int j = std::clamp(static_cast<int>(std::floor(0.5 * scaled)), 0, last);
   const double centre = 2.0 * j + 1.0;
   const double value = std::max(0.0, 1.0 - std::fabs(scaled - centre));
-  const double steep = std::ldexp(1.0, level);
+  const double steep = powerOfTwo(level);
   h.count = 1;
   h.terms[0] = {j, value, scaled < centre ? steep : -steep};
   return h;

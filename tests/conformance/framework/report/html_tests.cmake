@@ -3,6 +3,8 @@
 # index and one case page are loaded and checked against results.json (check_html_page.cmake);
 # and negative controls prove that the check catches a script error, a wrong count and an image
 # that does not load. Included from tests/CMakeLists.txt (voxref_expect, test_out, voxref_bin).
+# One browser at a time (RESOURCE_LOCK chromium): the first start in a fresh machine waits about
+# 20 s on the disk with almost no CPU, and three such waits side by side left both cores idle.
 find_program(VOXREF_CHROMIUM NAMES chromium chromium-browser DOC "headless browser for the tests of the HTML report")
 set(html_report "${test_out}/report-html")
 # A fresh directory: pages left by an earlier run must not stand in for pages this run failed to write.
@@ -20,8 +22,8 @@ function(voxref_html_check name page)
     list(APPEND args "-DBREAK=${ARG_BREAK}" "-DEXPECT_PROBLEM=${ARG_EXPECT_PROBLEM}")
   endif()
   add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} ${args} -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/report/check_html_page.cmake")
-  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED html_report LABELS report TIMEOUT 300
-                       SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED html_report LABELS report TIMEOUT 300 RESOURCE_LOCK chromium
+                       SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:" COST 10)
 endfunction()
 
 voxref_html_check(report.html.index_in_chromium index)
@@ -40,4 +42,5 @@ add_test(NAME bench.study.page_negative_control.missing_image
                  "-DEXPECT_PROBLEM=could not load img [^ ]*plots/no-such-" "-DSCRATCH=${test_out}/chromium/bench-study-nc"
                  -P "${CMAKE_CURRENT_SOURCE_DIR}/conformance/framework/report/check_html_page.cmake")
 set_tests_properties(bench.study.page_in_chromium bench.study.page_negative_control.missing_image PROPERTIES
-                     FIXTURES_REQUIRED bench_study LABELS "bench;report" TIMEOUT 300 SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:")
+                     FIXTURES_REQUIRED bench_study LABELS "bench;report" TIMEOUT 300 SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:"
+                     RESOURCE_LOCK chromium COST 10)
