@@ -12,6 +12,7 @@ pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 find_package(embree 3 REQUIRED)                 # libembree-dev (fixtures, issue 5)
 find_package(CLI11 REQUIRED)                    # libcli11-dev
 find_package(nlohmann_json 3 REQUIRED)          # nlohmann-json3-dev
+find_package(tomlplusplus 3 REQUIRED)           # libtomlplusplus-dev: suite files (docs/ci.md)
 find_package(ZLIB REQUIRED)                     # zlib1g-dev (gzip-compressed raw volumes)
 pkg_check_modules(ZSTD REQUIRED IMPORTED_TARGET libzstd)  # libzstd-dev: a general-purpose baseline of the benchmarks
 pkg_check_modules(LZMA REQUIRED IMPORTED_TARGET liblzma)  # liblzma-dev: xz, another baseline

@@ -10,7 +10,7 @@ $SUDO apt-get install -y -qq --no-install-recommends \
   build-essential cmake ninja-build pkg-config \
   libglm-dev libosmesa6-dev libegl-dev libgl1-mesa-dri mesa-vulkan-drivers \
   libopenexr-dev libopenimageio-dev libembree-dev \
-  libgtest-dev libgmock-dev clang clang-format libclang-rt-14-dev libcli11-dev nlohmann-json3-dev zlib1g-dev libzstd-dev liblzma-dev libssl-dev \
+  libgtest-dev libgmock-dev clang clang-format libclang-rt-14-dev libcli11-dev nlohmann-json3-dev libtomlplusplus-dev zlib1g-dev libzstd-dev liblzma-dev libssl-dev \
   chromium gnuplot-nox \
   > /dev/null
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release > /dev/null

@@ -1,5 +1,6 @@
 #include "conformance/cli/case_selection.h"
 
+#include <cstdlib>
 #include <stdexcept>
 
 #include "conformance/framework/controls/runner_controls.h"
@@ -20,6 +21,17 @@ std::optional<conf::Shard> shardOption(const std::string& text) {
   if (text.empty()) return std::nullopt;
   try {
     return conf::parseShard(text);
+  } catch (const std::invalid_argument& e) {
+    throw conf::UsageError(e.what());
+  }
+}
+
+std::optional<conf::Shard> shardOptionOrCi(const std::string& text, std::string& from) {
+  from = "--shard";
+  if (!text.empty()) return shardOption(text);
+  from = "CI_NODE_INDEX/CI_NODE_TOTAL";
+  try {
+    return conf::shardFromCiVariables(std::getenv("CI_NODE_INDEX"), std::getenv("CI_NODE_TOTAL"));
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
   }

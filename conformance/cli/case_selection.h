@@ -16,4 +16,8 @@ std::vector<conf::Case> catalogue(bool runnerControls);
 // nullopt for an empty option; conf::UsageError for a malformed one.
 std::optional<conf::Shard> shardOption(const std::string& text);
 
+// --shard when given, else the shard GitLab's CI_NODE_INDEX and CI_NODE_TOTAL name (conf::
+// shardFromCiVariables), else nullopt; `from` says which. conf::UsageError for a malformed one.
+std::optional<conf::Shard> shardOptionOrCi(const std::string& text, std::string& from);
+
 }  // namespace voxref::cli

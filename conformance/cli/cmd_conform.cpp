@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 
@@ -23,6 +24,12 @@ struct ConformOptions {
   std::filesystem::path baseline;
   bool inProcess = false;
   bool runnerControls = false;
+  std::vector<std::filesystem::path> caseLists, fails, flakes, skips;
+  int flakeReruns = 1;
+  int fraction = 1;
+  std::string rendererCheck, versionCheck, junitTemplate, prefix;
+  int junitLimit = -1;
+  int slowest = 5;
 };
 
 int runConform(const ConformOptions& o) {
@@ -40,7 +47,19 @@ int runConform(const ConformOptions& o) {
   run.allImages = o.allImages;
   run.command = o.command;
   run.jobs = o.jobs;
-  run.shard = shardOption(o.shard);
+  run.shard = shardOptionOrCi(o.shard, run.shardFrom);  // GitLab's parallel: N sets the CI variables
+  run.caseLists = o.caseLists;
+  run.failsFiles = o.fails;
+  run.flakesFiles = o.flakes;
+  run.skipsFiles = o.skips;
+  run.flakeReruns = o.flakeReruns;
+  run.fraction = o.fraction;
+  run.rendererCheck = o.rendererCheck;
+  run.versionCheck = o.versionCheck;
+  run.junit.limit = o.junitLimit;
+  run.junit.linkTemplate = o.junitTemplate;
+  run.junit.idPrefix = o.prefix;
+  run.slowest = o.slowest;
   run.timeLimitSeconds = o.timeout;
   run.inProcess = o.inProcess;
   run.baseline = o.baseline;
@@ -48,6 +67,9 @@ int runConform(const ConformOptions& o) {
     return conf::runConformance(run, catalogue(o.runnerControls), std::cout).exitCode;
   } catch (const gpu::GlUnavailable& e) {
     std::cerr << "voxref: no GL context for --driver " << o.driver << ": " << e.what() << "\n";
+    return 2;
+  } catch (const conf::DriverCheckError& e) {
+    std::cerr << "voxref: " << e.what() << "\n";
     return 2;
   }
 }
@@ -81,6 +103,27 @@ Subcommand addConformCommand(CLI::App& app, const std::string& invocation) {
                 "add the runner's control cases (runner.control.*: deliberate driver crash, segfault, abort, exit, "
                 "hang, exception)");
 
+  // Running in a CI fleet, as deqp-runner does (docs/ci.md).
+  sub->add_option("--caselist", o->caseLists,
+                  "a file of case ids, one per line: the selection (with --filter); repeatable");
+  sub->add_option("--fails", o->fails,
+                  "expected failures, 'case.id,Status' per line (deqp-runner's fails file); repeatable");
+  sub->add_option("--flakes", o->flakes, "regular expressions of known flaky cases, one per line; repeatable");
+  sub->add_option("--skips", o->skips, "regular expressions of cases not to run, one per line; repeatable");
+  sub->add_option("--flake-reruns", o->flakeReruns,
+                  "reruns of a case that fails unexpectedly; a pass on one is a Flake, not a failure")
+      ->default_val(1);
+  sub->add_option("--fraction", o->fraction, "run every Nth case of the selection (before --shard)")->default_val(1);
+  sub->add_option("--renderer-check", o->rendererCheck,
+                  "regular expression GL_RENDERER must match, or the run stops before any case (exit 2)");
+  sub->add_option("--version-check", o->versionCheck,
+                  "regular expression GL_VERSION must match, or the run stops before any case (exit 2)");
+  sub->add_option("--junit-limit", o->junitLimit, "list at most N failed cases in junit.xml (failures.csv has all)");
+  sub->add_option("--junit-template", o->junitTemplate,
+                  "text added to each failure in junit.xml, {{testcase}} replaced by the case id (a link)");
+  sub->add_option("--prefix", o->prefix,
+                  "put before every case id in the CSV files and junit.xml, and in what the expectation files name");
+  sub->add_option("--slowest", o->slowest, "list the N slowest cases at the end")->default_val(5);
   return {sub, [o] { return runConform(*o); }};
 }
 

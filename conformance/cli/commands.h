@@ -28,6 +28,7 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app);  // encode, decode and 
 Subcommand addFixturesCommand(CLI::App& app);
 Subcommand addCheckShaderCommand(CLI::App& app, const std::string& invocation);
 Subcommand addProbeCommand(CLI::App& app);
+Subcommand addSuiteCommand(CLI::App& app);  // several conform configurations from a suite file (TOML)
 
 // An option value that is a finite number: "nan", "inf" and "1e309" (beyond double) are refused
 // when the command line is parsed, with the option's name.

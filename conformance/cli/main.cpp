@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
   subcommands.push_back(addFixturesCommand(app));
   subcommands.push_back(addCheckShaderCommand(app, invocation));
   subcommands.push_back(addProbeCommand(app));
+  subcommands.push_back(addSuiteCommand(app));
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

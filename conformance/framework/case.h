@@ -95,6 +95,12 @@ struct CaseResult {
   // Other wall-clock times the case measured (seconds): kept apart from the figures, which must be
   // equal bit for bit between equal runs; never compared between runs.
   nlohmann::json timings = nlohmann::json::object();
+  // Set by the runner: the wall time of the case (its process, from fork to end), the statuses of
+  // its reruns (a flake check, expectations/outcomes.h), and its outcome against the run's
+  // expectation files in deqp-runner's words ("Pass", "ExpectedFail", "Flake" ...).
+  double seconds = 0.0;
+  std::vector<Status> reruns;
+  std::string outcome;
   CaseImages images;
   std::vector<PixelValues> worstPixels;
 };

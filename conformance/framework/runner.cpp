@@ -1,13 +1,18 @@
 #include "conformance/framework/runner.h"
 #include "conformance/framework/selection.h"
 
+#include <algorithm>
 #include <csignal>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <ostream>
+#include <regex>
 
 #include "conformance/framework/case_context.h"
 #include "conformance/framework/driver_info.h"
+#include "conformance/framework/expectations/expectation_files.h"
+#include "conformance/framework/expectations/outcomes.h"
 #include "conformance/framework/isolation/child_processes.h"
 #include "conformance/framework/isolation/interrupt.h"
 #include "conformance/framework/probe/probed_profile.h"
@@ -18,6 +23,9 @@
 #include "conformance/framework/report/report_files.h"
 #include "conformance/framework/report/results_json.h"
 #include "conformance/framework/report/results_reader.h"
+#include "conformance/framework/run_selection.h"
+#include "conformance/framework/run_summary.h"
+#include "conformance/framework/stopwatch.h"
 #include "conformance/io/atomic_file.h"
 #include "gpu/gl_error.h"
 
@@ -125,6 +133,90 @@ void collect(const std::vector<std::optional<CaseResult>>& slots, const std::vec
   }
 }
 
+// Runs chosen cases of the run, each in its own process (or in this one, --in-process), and hands
+// each result to the parent as it ends. While children run, results.json holds a snapshot
+// (marked running and incomplete), refreshed at most every two seconds after markDirty(): a
+// parent killed outright still leaves what ran.
+class CaseRunner {
+ public:
+  CaseRunner(const RunOptions& options, const Identity& identity, const std::vector<Case>& cases,
+             const std::vector<std::optional<CaseResult>>& slots, const RunInfo& run)
+      : options_(options), identity_(identity), cases_(cases), slots_(slots), run_(run) {}
+
+  void markDirty() { dirty_ = true; }
+
+  // False when the run was interrupted (the cases not yet ended have no result).
+  bool run(const std::vector<std::size_t>& which, const std::function<void(std::size_t, CaseResult)>& done) {
+    if (options_.inProcess) {
+      if (!gl_) gl_ = gpu::createContext(options_.driver);
+      const std::unique_ptr<CaseContext> ctx = makeCaseContext(options_, identity_, gl_.get());
+      for (std::size_t i : which) {
+        const Clock::time_point t0 = Clock::now();
+        CaseResult r = runCase(cases_[i], *ctx);
+        r.seconds = secondsSince(t0);
+        done(i, std::move(r));
+      }
+      return true;
+    }
+    isolation::PoolOptions pool;
+    pool.jobs = options_.jobs;
+    pool.timeLimitSeconds = options_.timeLimitSeconds;
+    pool.tickSeconds = 2.0;
+    pool.tick = [this] { snapshot(); };
+    isolation::InterruptGuard guard;
+    return isolation::runEachInChild(
+        which.size(), pool,
+        [&](std::size_t k) -> std::string {
+          std::unique_ptr<gpu::Context> gl = gpu::createContext(options_.driver);
+          const std::unique_ptr<CaseContext> ctx = makeCaseContext(options_, identity_, gl.get());
+          return caseJson(runCase(cases_[which[k]], *ctx)).dump();
+        },
+        [&](std::size_t k, const isolation::ChildOutcome& o) {
+          if (o.ending == isolation::Ending::Interrupted) return;  // not run: listed as such
+          done(which[k], resultOf(cases_[which[k]], o));
+        });
+  }
+
+ private:
+  CaseResult resultOf(const Case& c, const isolation::ChildOutcome& o) const {
+    CaseResult r;
+    if (o.ending == isolation::Ending::Finished) {
+      try {
+        r = caseFromJson(nlohmann::json::parse(o.result));
+        r.stderrText = keptOutput(o);
+      } catch (const std::exception& e) {
+        isolation::ChildOutcome bad = o;
+        bad.ending = isolation::Ending::Exited;
+        r = lostCase(c, bad, options_.timeLimitSeconds);
+        r.message = std::string("the case's process handed back an unreadable result: ") + e.what();
+      }
+    } else {
+      r = lostCase(c, o, options_.timeLimitSeconds);
+    }
+    r.seconds = o.seconds;
+    return r;
+  }
+
+  void snapshot() {
+    if (!dirty_) return;
+    RunInfo now = run_;
+    now.running = true;
+    now.complete = false;
+    std::vector<CaseResult> results;
+    collect(slots_, cases_, results, now.notRun);
+    io::writeFileAtomically(options_.outDir / "results.json", resultsText(now, results));
+    dirty_ = false;
+  }
+
+  const RunOptions& options_;
+  const Identity& identity_;
+  const std::vector<Case>& cases_;
+  const std::vector<std::optional<CaseResult>>& slots_;
+  const RunInfo& run_;
+  std::unique_ptr<gpu::Context> gl_;  // --in-process only
+  bool dirty_ = false;
+};
+
 }  // namespace
 
 CaseResult runCase(const Case& c, CaseContext& ctx) {
@@ -144,12 +236,67 @@ CaseResult runCase(const Case& c, CaseContext& ctx) {
   return r;
 }
 
+namespace {
+
+// The run's expectation files and case lists, read before anything runs.
+struct RunFiles {
+  Expectations expectations;
+  std::vector<ListedCase> caseList;
+};
+
+RunFiles readRunFiles(const RunOptions& o) {
+  try {
+    return {readExpectations(o.failsFiles, o.flakesFiles, o.skipsFiles), readCaseLists(o.caseLists)};
+  } catch (const ExpectationFileError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+std::regex checkRegex(const std::string& text, const char* option) {
+  try {
+    return std::regex(text, std::regex::ECMAScript);
+  } catch (const std::regex_error& e) {
+    throw UsageError(std::string(option) + " '" + text + "' is not a regular expression (" + e.what() + ")");
+  }
+}
+
+// --renderer-check and --version-check, against what the identity child saw.
+void checkDriver(const RunOptions& o, const Identity& identity) {
+  auto check = [](const std::string& pattern, const char* option, const char* what, const std::string& actual) {
+    if (pattern.empty() || std::regex_search(actual, checkRegex(pattern, option))) return;
+    throw DriverCheckError(std::string(option) + " '" + pattern + "' does not match the " + what + " '" + actual +
+                           "'; no case ran (is the job on the machine and driver it was written for?)");
+  };
+  check(o.rendererCheck, "--renderer-check", "renderer", identity.renderer);
+  check(o.versionCheck, "--version-check", "version", identity.version);
+}
+
+nlohmann::json pathsJson(const std::vector<std::filesystem::path>& paths) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const auto& p : paths) a.push_back(p.string());
+  return a;
+}
+
+}  // namespace
+
 RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& catalogue, std::ostream& out) {
-  std::vector<Case> cases = selectCases(catalogue, options.filter);
-  if (cases.empty()) throw UsageError("no case matches '" + options.filter + "' (voxref list shows them)");
-  const std::size_t selected = cases.size();
-  if (options.shard) cases = shardOf(cases, *options.shard);
   if (options.jobs < 1) throw UsageError("--jobs must be at least 1");
+  if (options.flakeReruns < 0) throw UsageError("--flake-reruns must be 0 or more");
+  if (options.fraction < 1) throw UsageError("--fraction must be at least 1");
+  checkRegex(options.rendererCheck, "--renderer-check");
+  checkRegex(options.versionCheck, "--version-check");
+  const RunFiles files = readRunFiles(options);
+  const Expectations& expectations = files.expectations;
+  const std::string& prefix = options.junit.idPrefix;
+  SelectionRequest request;
+  request.filter = options.filter;
+  request.caseList = files.caseList;
+  request.skips = &expectations.skips;
+  request.idPrefix = prefix;
+  request.fraction = options.fraction;
+  request.shard = options.shard;
+  const Selection selection = selectRun(catalogue, request);
+  const std::vector<Case>& cases = selection.cases;
 
   std::vector<CaseResult> baseline;
   if (!options.baseline.empty()) {
@@ -160,6 +307,7 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
     }
   }
   const Identity identity = identify(options);
+  checkDriver(options, identity);
   // The identity child has loaded the driver's library and made a context with it: now the parent
   // loads the library too (no context, no thread), so that every case process forked from it
   // starts without loading and binding it again. A failure here changes nothing: each case's
@@ -177,14 +325,27 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
   run.execution = {{"isolation", options.inProcess ? "none (--in-process)" : "one process per case"},
                    {"jobs", options.inProcess ? 1 : options.jobs},
                    {"time_limit_seconds", options.inProcess ? 0.0 : options.timeLimitSeconds},
-                   {"selected", selected},
+                   {"matched", selection.matched},
+                   {"skipped_by_skips_files", selection.skipped},
+                   {"fraction", options.fraction},
+                   {"selected", selection.selected},
                    {"shard", options.shard ? nlohmann::json{{"index", options.shard->index},
                                                             {"count", options.shard->count},
-                                                            {"cases", cases.size()}}
-                                           : nlohmann::json(nullptr)}};
+                                                            {"cases", cases.size()},
+                                                            {"from", options.shardFrom}}
+                                           : nlohmann::json(nullptr)},
+                   {"flake_reruns", options.flakeReruns},
+                   {"id_prefix", prefix},
+                   {"case_lists", pathsJson(options.caseLists)},
+                   {"expectations",
+                    {{"fails", pathsJson(options.failsFiles)},
+                     {"flakes", pathsJson(options.flakesFiles)},
+                     {"skips", pathsJson(options.skipsFiles)}}},
+                   {"checks", {{"renderer", options.rendererCheck}, {"version", options.versionCheck}}}};
   out << "voxref conform: " << cases.size() << " case(s)";
   if (options.shard)
-    out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selected << ")";
+    out << " (shard " << options.shard->index << "/" << options.shard->count << " of " << selection.selected << ")";
+  if (selection.skipped) out << ", " << selection.skipped << " removed by the skips file(s)";
   out << " on " << identity.renderer << " (" << identity.version << ") through "
       << identity.driver.value("api", std::string("?")) << ", profile "
       << (identity.profile ? std::string(identity.profile->name) + (identity.profile->probed ? " (probed)" : "")
@@ -202,75 +363,46 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
     out << "profile: " << p.at("chosen").get<std::string>() << std::endl;
 
   std::vector<std::optional<CaseResult>> slots(cases.size());
+  CaseRunner runner(options, identity, cases, slots, run);
   Progress progress("voxref conform", static_cast<long>(cases.size()));
   long done = 0;
-  bool complete = true;
-  if (options.inProcess) {
-    std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
-    const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, identity, gl.get());
-    for (std::size_t i = 0; i < cases.size(); ++i) {
-      progress.update(done, cases[i].id);
-      slots[i] = runCase(cases[i], *ctx);
-      ++done;
-    }
-  } else {
-    // While the run goes on, results.json holds a snapshot (marked running and incomplete),
-    // refreshed at most every two seconds: a parent killed outright still leaves what ran.
-    bool dirty = false;
-    auto snapshot = [&] {
-      if (!dirty) return;
-      RunInfo now = run;
-      now.running = true;
-      now.complete = false;
-      std::vector<CaseResult> results;
-      collect(slots, cases, results, now.notRun);
-      io::writeFileAtomically(options.outDir / "results.json", resultsText(now, results));
-      dirty = false;
-    };
-    isolation::PoolOptions pool;
-    pool.jobs = options.jobs;
-    pool.timeLimitSeconds = options.timeLimitSeconds;
-    pool.tickSeconds = 2.0;
-    pool.tick = snapshot;
-    isolation::InterruptGuard guard;
-    complete = isolation::runEachInChild(
-        cases.size(), pool,
-        [&](std::size_t i) -> std::string {
-          std::unique_ptr<gpu::Context> gl = gpu::createContext(options.driver);
-          const std::unique_ptr<CaseContext> ctx = makeCaseContext(options, identity, gl.get());
-          return caseJson(runCase(cases[i], *ctx)).dump();
-        },
-        [&](std::size_t i, const isolation::ChildOutcome& o) {
-          if (o.ending == isolation::Ending::Interrupted) return;  // not run: listed as such
-          if (o.ending == isolation::Ending::Finished) {
-            try {
-              CaseResult r = caseFromJson(nlohmann::json::parse(o.result));
-              r.stderrText = keptOutput(o);
-              slots[i] = std::move(r);
-            } catch (const std::exception& e) {
-              isolation::ChildOutcome bad = o;
-              bad.ending = isolation::Ending::Exited;
-              slots[i] = lostCase(cases[i], bad, options.timeLimitSeconds);
-              slots[i]->message = std::string("the case's process handed back an unreadable result: ") + e.what();
-            }
-          } else {
-            slots[i] = lostCase(cases[i], o, options.timeLimitSeconds);
-          }
-          dirty = true;
-          progress.update(++done, cases[i].id);
-        });
-    if (!complete)
-      run.interruptedBy =
-          std::string("SIG") +
-          (sigabbrev_np(isolation::interruptSignal()) ? sigabbrev_np(isolation::interruptSignal()) : "?");
-  }
+  std::vector<std::size_t> all(cases.size());
+  for (std::size_t i = 0; i < cases.size(); ++i) all[i] = i;
+  bool complete = runner.run(all, [&](std::size_t i, CaseResult r) {
+    slots[i] = std::move(r);
+    runner.markDirty();
+    progress.update(++done, cases[i].id);
+  });
   progress.finish();
+
+  // Flakes: a case that failed unexpectedly runs again, in a fresh process, up to flakeReruns times;
+  // a pass on one makes it a Flake (expectations/outcomes.h).
+  for (int round = 1; complete && round <= options.flakeReruns; ++round) {
+    std::vector<std::size_t> again;
+    for (std::size_t i = 0; i < cases.size(); ++i)
+      if (slots[i] && wantsRerun(prefix + slots[i]->id, *slots[i], expectations) &&
+          std::none_of(slots[i]->reruns.begin(), slots[i]->reruns.end(),
+                       [](Status s) { return s == Status::Pass || s == Status::Warn; }))
+        again.push_back(i);
+    if (again.empty()) break;
+    out << "rerunning " << again.size() << " case(s) that failed unexpectedly, to tell a flake (rerun " << round
+        << " of " << options.flakeReruns << ")" << std::endl;
+    complete = runner.run(again, [&](std::size_t i, const CaseResult& r) { slots[i]->reruns.push_back(r.status); });
+  }
+  if (!complete)
+    run.interruptedBy = std::string("SIG") +
+                        (sigabbrev_np(isolation::interruptSignal()) ? sigabbrev_np(isolation::interruptSignal()) : "?");
 
   RunOutcome outcome;
   outcome.complete = complete;
   collect(slots, cases, outcome.results, run.notRun);
-  if (identity.profile && identity.profile->probed)
-    for (CaseResult& r : outcome.results) markProbedModelFailure(r);
+  bool jobFails = false;
+  for (CaseResult& r : outcome.results) {
+    if (identity.profile && identity.profile->probed) markProbedModelFailure(r);
+    const Outcome o = classify(prefix + r.id, &r, r.reruns, expectations);
+    r.outcome = outcomeName(o, r.status);
+    jobFails = jobFails || failsJob(o);
+  }
   run.complete = complete;
   run.finished = utcTimestamp();
   BaselineDiff diff;
@@ -278,25 +410,18 @@ RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& ca
     diff = compareWithBaseline(baseline, outcome.results);
     run.baseline = baselineJson(diff, options.baseline.string());
   }
-  writeReportFiles(options.outDir, run, outcome.results);
+  writeReportFiles(options.outDir, run, outcome.results, options.junit);
 
-  std::map<Status, int> counts;
-  for (const CaseResult& r : outcome.results) ++counts[r.status];
-  for (const CaseResult& r : outcome.results)
-    if (r.status != Status::Pass) out << "  " << name(r.status) << "  " << r.id << ": " << r.message << "\n";
+  printRunSummary(out, outcome.results, options.slowest);
   if (!options.baseline.empty()) printBaselineDiff(out, diff, options.baseline.string());
   if (!complete)
     out << "INTERRUPTED by " << run.interruptedBy << ": partial report, " << outcome.results.size() << " of "
         << cases.size() << " case(s) ran, " << run.notRun.size() << " not run\n";
-  out << "summary:";
-  for (Status s : {Status::Pass, Status::Warn, Status::Fail, Status::Skip, Status::Crash, Status::Timeout})
-    out << " " << counts[s] << " " << name(s);
-  out << "\n" << judgementLines(outcome.results);
-  out << "report: " << (options.outDir / "index.html").string() << " (results.json, junit.xml beside it)\n";
-  const bool failed = counts[Status::Fail] + counts[Status::Crash] + counts[Status::Timeout] > 0;
+  out << "report: " << (options.outDir / "index.html").string()
+      << " (results.json, junit.xml, results.csv, failures.csv beside it)\n";
   outcome.exitCode = !complete          ? 128 + isolation::interruptSignal()
                      : diff.regressed() ? kExitRegressed
-                     : failed           ? kExitFailed
+                     : jobFails         ? kExitFailed
                                         : kExitPass;
   return outcome;
 }

@@ -17,6 +17,7 @@
 
 #include "conformance/framework/case.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/framework/report/junit_xml.h"
 #include "conformance/framework/shard.h"
 #include "gpu/context.h"
 
@@ -35,6 +36,24 @@ struct RunOptions {
   double timeLimitSeconds = 300.0;  // per case; <= 0: none
   bool inProcess = false;           // no isolation (for a debugger): a crash ends the run
   std::filesystem::path baseline;   // an earlier results.json to compare with; empty: none
+  std::string shardFrom;            // what set the shard ("--shard", "CI_NODE_INDEX/CI_NODE_TOTAL"), for the report
+
+  // Running in a CI fleet (docs/ci.md): deqp-runner's expectation files and case lists (each
+  // repeatable), flake reruns, every Nth case, checks of the driver's identity before any case.
+  std::vector<std::filesystem::path> caseLists, failsFiles, flakesFiles, skipsFiles;
+  int flakeReruns = 1;        // reruns of a case that fails unexpectedly; a pass on one is a Flake
+  int fraction = 1;           // keep every Nth case of the selection
+  std::string rendererCheck;  // ECMAScript regex GL_RENDERER must match (search); empty: none
+  std::string versionCheck;   // the same for GL_VERSION
+  JunitOptions junit;         // --junit-limit, --junit-template, and the ids' --prefix
+  int slowest = 5;            // the slowest cases listed at the end
+};
+
+// The driver is not the one the run was told to expect (--renderer-check, --version-check):
+// no case ran; exit status 2.
+class DriverCheckError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 struct RunOutcome {
@@ -43,11 +62,15 @@ struct RunOutcome {
   int exitCode = kExitPass;
 };
 
-// Selects the cases (UsageError when the filter matches none), learns the driver's identity
+// Selects the cases (run_selection.h; UsageError when nothing matches, or for a bad expectation
+// file or case list, naming the file and line), learns the driver's identity
 // and the profile in a child process (gpu::GlUnavailable when the driver cannot be had,
 // UsageError for an unknown profile or an unreadable baseline), runs every case in its own
 // process, writes results.json, junit.xml and index.html into outDir (atomically) and prints a
-// summary to `out`. An exception inside a case is its `crash`; so is a signal or an exit
+// summary to `out` (DriverCheckError before any case where the renderer or version does not match
+// its check). A case that fails unexpectedly is rerun (flakeReruns); every case gets its outcome
+// against the expectation files (expectations/outcomes.h), and those decide the exit status:
+// kExitFailed where an outcome fails the job. An exception inside a case is its `crash`; so is a signal or an exit
 // without a result; a case still running at its time limit is killed and is a `timeout`.
 RunOutcome runConformance(const RunOptions& options, const std::vector<Case>& catalogue, std::ostream& out);
 

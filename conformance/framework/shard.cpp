@@ -27,4 +27,25 @@ std::vector<Case> shardOf(const std::vector<Case>& selection, const Shard& shard
   return out;
 }
 
+std::vector<Case> fractionOf(const std::vector<Case>& selection, int n) {
+  if (n < 1) throw std::invalid_argument("--fraction must be at least 1");
+  std::vector<Case> out;
+  for (std::size_t p = 0; p < selection.size(); p += static_cast<std::size_t>(n)) out.push_back(selection[p]);
+  return out;
+}
+
+std::optional<Shard> shardFromCiVariables(const char* nodeIndex, const char* nodeTotal) {
+  if (!nodeIndex && !nodeTotal) return std::nullopt;
+  if (!nodeIndex || !nodeTotal)
+    throw std::invalid_argument(std::string(nodeIndex ? "CI_NODE_INDEX is set but CI_NODE_TOTAL is not"
+                                                      : "CI_NODE_TOTAL is set but CI_NODE_INDEX is not") +
+                                " (GitLab sets both for a job with parallel: N)");
+  try {
+    return parseShard(std::string(nodeIndex) + "/" + nodeTotal);
+  } catch (const std::invalid_argument&) {
+    throw std::invalid_argument("CI_NODE_INDEX='" + std::string(nodeIndex) + "' and CI_NODE_TOTAL='" + nodeTotal +
+                                "': expected whole numbers with 1 <= CI_NODE_INDEX <= CI_NODE_TOTAL");
+  }
+}
+
 }  // namespace voxref::conf

@@ -8,6 +8,7 @@
 //   make_fuzz_seeds raw_volume DIR    raw volumes, plain and gzip (the target's input layout)
 //   make_fuzz_seeds manifest DIR      fixture manifests (the layout generateIsoFixtures writes)
 //   make_fuzz_seeds results DIR       results.json files (resultsJson)
+//   make_fuzz_seeds expectations DIR  fails, flakes and skips files and case lists (docs/ci.md)
 //
 // Every seed is read back with the product's own reader before it is written: a seed the reader
 // refuses fails the seeds test (exit 1), since a corpus of invalid files would only fuzz the
@@ -25,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "conformance/framework/expectations/expectation_files.h"
 #include "conformance/framework/report/results_json.h"
 #include "conformance/framework/report/results_reader.h"
 #include "conformance/io/raw_volume.h"
@@ -315,14 +317,34 @@ void results() {
   seed("interrupted.json", interrupted, {warn, full});
 }
 
+// --- CI files ----------------------------------------------------------------------------
+void expectations() {
+  const std::map<std::string, std::string> files{
+      {"fails.txt",
+       "# expected failures on softpipe\nsparsegrid.texture.r8.exact.linear.repeat,Fail\r\n"
+       "iso.frames.buckyball,Crash\ntimevarying.hard.orbit,Timeout\nsparsegrid.hard.level12.rgba8,Warn\n"},
+      {"flakes.txt", "# known flakes\n^timevarying\\.decode\\..*\\.orbit$\n[0-9]+\\.xray\n"},
+      {"caselist.txt", "sparsegrid.hard.level1\n\n  iso.hard.single_voxel\n# end\n"}};
+  for (const auto& [name, text] : files) {
+    conf::Expectations e;
+    conf::parseFailsText(name == "fails.txt" ? text : "", name, e.fails);
+    if (name == "flakes.txt" && conf::parsePatternsText(text, name).size() != 2)
+      throw std::runtime_error(name + " does not read back");
+    if (name == "caselist.txt" && conf::parseCaseListText(text, name).size() != 2)
+      throw std::runtime_error(name + " does not read back");
+    write(name, text);
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::map<std::string, std::function<void()>> kinds{
-      {"timevarying", timevarying}, {"huffman", huffman},   {"scene", scene},
-      {"raw_volume", rawVolume},    {"manifest", manifest}, {"results", results}};
+      {"timevarying", timevarying},  {"huffman", huffman},   {"scene", scene},
+      {"raw_volume", rawVolume},     {"manifest", manifest}, {"results", results},
+      {"expectations", expectations}};
   if (argc != 3 || !kinds.count(argv[1])) {
-    std::cerr << "usage: make_fuzz_seeds timevarying|huffman|scene|raw_volume|manifest|results DIR\n";
+    std::cerr << "usage: make_fuzz_seeds timevarying|huffman|scene|raw_volume|manifest|results|expectations DIR\n";
     return 2;
   }
   outDir = argv[2];

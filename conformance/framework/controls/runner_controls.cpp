@@ -7,7 +7,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
+#include <string>
 
 #include "conformance/framework/case_context.h"
 
@@ -66,6 +68,28 @@ std::vector<Case> runnerControlCases() {
         say("throwing");
         throw std::runtime_error("a deliberate exception");
       }));
+  cases.push_back(control("flaky", "expect flake: fails on its first run in a run, passes when the runner reruns it",
+                          [](CaseContext& ctx) -> CaseResult {
+                            // The run's parent process (the runner) names the marker: one per run, whatever else
+                            // shares the report directory. The case's own process is new at every run of it.
+                            const std::filesystem::path marker =
+                                ctx.outDir() /
+                                (".runner-control-flaky." + std::to_string(static_cast<long>(getppid())));
+                            CaseResult r;
+                            std::error_code ec;
+                            if (std::filesystem::exists(marker, ec)) {
+                              std::filesystem::remove(marker, ec);
+                              say("second run: passing");
+                              r.status = Status::Pass;
+                              return r;
+                            }
+                            std::FILE* f = std::fopen(marker.c_str(), "w");
+                            if (f) std::fclose(f);
+                            say("first run: failing");
+                            r.status = Status::Fail;
+                            r.message = "a deliberate failure on the case's first run in this run";
+                            return r;
+                          }));
   return cases;
 }
 

@@ -33,6 +33,8 @@ nlohmann::json caseJson(const CaseResult& r) {
     if (p.allowed) w["allowed"] = {p.allowed->first, p.allowed->second};
     worst.push_back(w);
   }
+  nlohmann::json reruns = nlohmann::json::array();
+  for (Status s : r.reruns) reruns.push_back(name(s));
   return {{"id", r.id},
           {"system", r.system},
           {"description", r.description},
@@ -49,6 +51,9 @@ nlohmann::json caseJson(const CaseResult& r) {
           {"seconds_emulation", r.secondsEmulation},
           {"seconds_reference", r.secondsReference},
           {"timings", r.timings},
+          {"seconds", r.seconds},
+          {"reruns", reruns},
+          {"outcome", r.outcome},
           {"images", images},
           {"worst_pixels", worst}};
 }

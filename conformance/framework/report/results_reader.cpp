@@ -102,6 +102,17 @@ CaseResult caseFromJson(const nlohmann::json& j) {
     if (!it->is_object()) throw ResultsFormatError(where + ".timings: expected an object");
     r.timings = *it;
   }
+  // seconds, reruns and outcome are absent in results.json of earlier versions.
+  if (const auto it = j.find("seconds"); it != j.end()) r.seconds = number(j, "seconds", where);
+  if (const auto it = j.find("reruns"); it != j.end()) {
+    if (!it->is_array()) throw ResultsFormatError(where + ".reruns: expected an array of statuses");
+    for (const auto& s : *it) {
+      const auto st = s.is_string() ? parseStatus(s.get<std::string>()) : std::nullopt;
+      if (!st) throw ResultsFormatError(where + ".reruns: not one of pass, warn, fail, skip, crash, timeout");
+      r.reruns.push_back(*st);
+    }
+  }
+  r.outcome = optionalText(j, "outcome");
   const nlohmann::json& images = field(j, "images", where);
   r.images.rendered = optionalText(images, "rendered");
   r.images.emulated = optionalText(images, "emulated");

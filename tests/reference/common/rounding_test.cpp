@@ -1,12 +1,27 @@
 #include "reference/common/rounding.h"
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <gtest/gtest.h>
 
 namespace voxref::ref {
 namespace {
+
+// powerOfTwo and scaleByPowerOfTwo against libm's ldexp, the definition they replace, over every
+// exponent that gives a normal, subnormal, zero or infinite result, and for values of each kind.
+TEST(PowerOfTwo, EqualsLdexpBitForBit) {
+  for (int e = -1100; e <= 1100; ++e) {
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(powerOfTwo(e)), std::bit_cast<std::uint64_t>(std::ldexp(1.0, e))) << e;
+    for (double x : {0.0, -0.0, 1.0, -3.0, 0.1, 1.0 / 3.0, 1e300, -1e-300, 4.9e-324, 2.2250738585072014e-308,
+                     std::numeric_limits<double>::infinity(), std::numeric_limits<double>::max()})
+      ASSERT_EQ(std::bit_cast<std::uint64_t>(scaleByPowerOfTwo(x, e)), std::bit_cast<std::uint64_t>(std::ldexp(x, e)))
+          << x << " * 2^" << e;
+  }
+  EXPECT_TRUE(std::isnan(scaleByPowerOfTwo(std::nan(""), 3)));
+}
 
 TEST(RoundHalfEven, TiesGoToEven) {
   EXPECT_EQ(roundHalfEven(0.5), 0.0);
