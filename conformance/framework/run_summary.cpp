@@ -5,6 +5,7 @@
 #include <map>
 #include <ostream>
 
+#include "conformance/framework/expectations/outcomes.h"
 #include "conformance/framework/report/judgement_counts.h"
 
 namespace voxref::conf {
@@ -16,9 +17,7 @@ void printRunSummary(std::ostream& out, const std::vector<CaseResult>& results, 
   for (const CaseResult& r : results) {
     ++counts[r.status];
     ++outcomes[r.outcome];
-    std::string plain(name(r.status));
-    plain[0] = static_cast<char>(plain[0] - 'a' + 'A');
-    const bool differs = !r.outcome.empty() && r.outcome != plain;
+    const bool differs = !r.outcome.empty() && r.outcome != deqpStatusName(r.status);
     outcomesDiffer = outcomesDiffer || differs;
     if (r.status == Status::Pass && !differs) continue;
     out << "  " << (differs ? r.outcome + " (" + std::string(name(r.status)) + ")" : std::string(name(r.status)))

@@ -1,10 +1,12 @@
 // libFuzzer target: the CI files a job gives `voxref conform` (conformance/framework/expectations/
 // expectation_files.h, docs/ci.md): a fails file, a flakes or skips file and a case list, the same
-// bytes read as each of the three; then the outcomes against what was read.
+// bytes read as each of the three, and as a suite file (conformance/framework/suite/suite_file.h);
+// then the outcomes against what was read.
 //
 // Contract under test:
 // - parseFailsText, parsePatternsText and parseCaseListText either return or throw
-//   ExpectationFileError; nothing else escapes (a std::regex_error neither), nothing reads out of
+//   ExpectationFileError, parseSuiteText returns or throws SuiteFileError (a TOML syntax error
+//   included); nothing else escapes (a std::regex_error neither), nothing reads out of
 //   bounds (ASan), no undefined behaviour (UBSan);
 // - what a fails file yields round-trips: failuresCsv of cases holding exactly its statuses reads
 //   back, as a fails file, to the same map of ids and statuses;
@@ -18,6 +20,7 @@
 #include "conformance/framework/expectations/expectation_files.h"
 #include "conformance/framework/expectations/outcomes.h"
 #include "conformance/framework/report/results_csv.h"
+#include "conformance/framework/suite/suite_file.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace voxref::conf;
@@ -36,6 +39,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const ListedCase& c : parseCaseListText(text, "list.txt"))
       if (c.id.empty()) std::abort();  // an accepted id is never empty
   } catch (const ExpectationFileError&) {
+  }
+  try {
+    for (const SuiteEntry& s : parseSuiteText(text, "suite.toml"))
+      if (s.name.empty() || s.fraction < 1 || s.flakeReruns < 0) std::abort();  // what the reader promises
+  } catch (const SuiteFileError&) {
   }
   // Round trip: the cases failing as the fails file says give it back as failures.csv.
   std::vector<CaseResult> results;

@@ -29,6 +29,7 @@
 #include "conformance/framework/expectations/expectation_files.h"
 #include "conformance/framework/report/results_json.h"
 #include "conformance/framework/report/results_reader.h"
+#include "conformance/framework/suite/suite_file.h"
 #include "conformance/io/raw_volume.h"
 #include "conformance/io/sha256.h"
 #include "conformance/modules/catalog.h"
@@ -324,13 +325,19 @@ void expectations() {
        "# expected failures on softpipe\nsparsegrid.texture.r8.exact.linear.repeat,Fail\r\n"
        "iso.frames.buckyball,Crash\ntimevarying.hard.orbit,Timeout\nsparsegrid.hard.level12.rgba8,Warn\n"},
       {"flakes.txt", "# known flakes\n^timevarying\\.decode\\..*\\.orbit$\n[0-9]+\\.xray\n"},
-      {"caselist.txt", "sparsegrid.hard.level1\n\n  iso.hard.single_voxel\n# end\n"}};
+      {"caselist.txt", "sparsegrid.hard.level1\n\n  iso.hard.single_voxel\n# end\n"},
+      {"suite.toml",
+       "[[conform]]\nname = \"llvmpipe\"\nfilter = \"sparsegrid.hard.*\"\nfails = [\"f.txt\"]\n"
+       "fraction = 2\n[conform.env]\nGALLIUM_DRIVER = \"llvmpipe\"\n\n[[conform]]\nname = \"zink\"\n"
+       "driver = \"egl\"\nrenderer_check = \"^zink\"\n"}};
   for (const auto& [name, text] : files) {
     conf::Expectations e;
     conf::parseFailsText(name == "fails.txt" ? text : "", name, e.fails);
     if (name == "flakes.txt" && conf::parsePatternsText(text, name).size() != 2)
       throw std::runtime_error(name + " does not read back");
     if (name == "caselist.txt" && conf::parseCaseListText(text, name).size() != 2)
+      throw std::runtime_error(name + " does not read back");
+    if (name == "suite.toml" && conf::parseSuiteText(text, name).size() != 2)
       throw std::runtime_error(name + " does not read back");
     write(name, text);
   }

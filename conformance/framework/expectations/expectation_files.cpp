@@ -51,6 +51,26 @@ std::string readWhole(const std::filesystem::path& path, const char* what) {
   return text.str();
 }
 
+// What libstdc++'s std::regex must not see (its compiler multiplies digit runs into a long without
+// a bound: a back-reference or repetition count of 19 digits is signed overflow, found by
+// expectation_files_fuzz): back-references, which deqp-runner's regex syntax has none of either,
+// and repetition counts of more than four digits. Returns the problem, or "".
+std::string unsupportedSyntax(const std::string& p) {
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (p[i] == '\\' && i + 1 < p.size()) {
+      if (p[i + 1] >= '1' && p[i + 1] <= '9') return "back-references (\\1 ...) are not supported";
+      ++i;
+    } else if (p[i] == '{') {
+      std::size_t digits = 0;
+      for (std::size_t j = i + 1; j < p.size() && p[j] != '}'; ++j) {
+        digits = (p[j] >= '0' && p[j] <= '9') ? digits + 1 : 0;
+        if (digits > 4) return "a repetition count of more than four digits";
+      }
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 void parseFailsText(const std::string& text, const std::string& file, std::map<std::string, ExpectedStatus>& into) {
@@ -86,6 +106,8 @@ std::vector<Pattern> parsePatternsText(const std::string& text, const std::strin
     if (entry.size() > kMaxPatternLength)
       throw ExpectationFileError(where(file, line) + ": a pattern of " + std::to_string(entry.size()) +
                                  " characters; at most " + std::to_string(kMaxPatternLength));
+    if (const std::string problem = unsupportedSyntax(entry); !problem.empty())
+      throw ExpectationFileError(where(file, line) + ": '" + entry + "': " + problem);
     try {
       out.push_back({entry, std::regex(entry, std::regex::ECMAScript), {file, line}});
     } catch (const std::regex_error& e) {

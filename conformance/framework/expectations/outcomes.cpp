@@ -4,6 +4,12 @@
 
 namespace voxref::conf {
 
+std::string deqpStatusName(Status s) {
+  std::string n(name(s));
+  n[0] = static_cast<char>(n[0] - 'a' + 'A');
+  return n;
+}
+
 std::string outcomeName(Outcome o, Status status) {
   switch (o) {
     case Outcome::Pass:
@@ -20,11 +26,8 @@ std::string outcomeName(Outcome o, Status status) {
       return "Timeout";
     case Outcome::ExpectedFail:
       return "ExpectedFail";
-    case Outcome::UnexpectedImprovement: {
-      std::string s(name(status));
-      s[0] = static_cast<char>(s[0] - 'a' + 'A');
-      return "UnexpectedImprovement(" + s + ")";
-    }
+    case Outcome::UnexpectedImprovement:
+      return "UnexpectedImprovement(" + deqpStatusName(status) + ")";
     case Outcome::Flake:
       return "Flake";
     case Outcome::KnownFlake:

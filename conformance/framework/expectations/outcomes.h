@@ -29,6 +29,10 @@ enum class Outcome {
 // the case's status (its improvement, for UnexpectedImprovement).
 std::string outcomeName(Outcome o, Status status);
 
+// A status as deqp-runner spells it, capitalised: "Pass", "Fail", "Crash" ... (the fails file's and
+// failures.csv's spelling; name(Status) is results.json's lower-case one).
+std::string deqpStatusName(Status s);
+
 // The outcome an outcomeName() names (nullopt for another text).
 std::optional<Outcome> parseOutcome(const std::string& text);
 

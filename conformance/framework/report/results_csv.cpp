@@ -20,9 +20,7 @@ std::string failuresCsv(const std::vector<OutcomeRow>& rows) {
     if (!r.result || r.outcome == Outcome::Flake || r.outcome == Outcome::KnownFlake) continue;
     const Status s = r.result->status;
     if (!isFailure(s) && s != Status::Warn) continue;
-    std::string status(name(s));
-    status[0] = static_cast<char>(status[0] - 'a' + 'A');
-    out += r.id + "," + status + "\n";
+    out += r.id + "," + deqpStatusName(s) + "\n";
   }
   return out;
 }

@@ -58,6 +58,12 @@ TEST(PatternsFile, MatchesAnywhereInTheIdAndRejectsABadExpression) {
   EXPECT_EQ(firstMatch(p, "x.sparsegrid.texture.a.repeat"), &p[0]) << "a search, not an anchored match";
   EXPECT_EQ(firstMatch(p, "iso.frames.buckyball"), &p[1]);
   EXPECT_EQ(firstMatch(p, "prefix.iso.frames.buckyball"), nullptr);
+  // What libstdc++'s regex compiler overflows on is refused before it sees it.
+  EXPECT_EQ(errorOf([] { parsePatternsText("(a)\\1\n", "f.txt"); }),
+            "f.txt:1: '(a)\\1': back-references (\\1 ...) are not supported");
+  EXPECT_EQ(errorOf([] { parsePatternsText("x{1,99999}\n", "f.txt"); }),
+            "f.txt:1: 'x{1,99999}': a repetition count of more than four digits");
+  EXPECT_EQ(parsePatternsText("x{1,9999}\\.\\0\n", "f.txt").size(), 1u);
   const std::string e = errorOf([] { parsePatternsText("ok\n(unclosed\n", "skips.txt"); });
   EXPECT_EQ(e.rfind("skips.txt:2: '(unclosed' is not a regular expression", 0), 0u) << e;
 }
