@@ -10,59 +10,24 @@
 namespace voxref::cli {
 namespace {
 
+// What the command line sets: most options straight into the run's options; the driver and the
+// shard are parsed when the command runs.
 struct ConformOptions {
-  std::string filter = "*";
+  conf::RunOptions run;
   std::string driver = "llvmpipe";
-  std::string profile = "auto";
-  std::filesystem::path out = "voxref-report";
-  int threads = 0;
-  bool allImages = false;
-  std::string command;
-  int jobs = 1;
   std::string shard;  // "I/N" or empty
-  double timeout = 300.0;
-  std::filesystem::path baseline;
-  bool inProcess = false;
   bool runnerControls = false;
-  std::vector<std::filesystem::path> caseLists, fails, flakes, skips;
-  int flakeReruns = 1;
-  int fraction = 1;
-  std::string rendererCheck, versionCheck, junitTemplate, prefix;
-  int junitLimit = -1;
-  int slowest = 5;
 };
 
-int runConform(const ConformOptions& o) {
-  conf::RunOptions run;
+int runConform(ConformOptions o) {
+  conf::RunOptions& run = o.run;
   const auto driver = gpu::parseDriver(o.driver);
   if (!driver) throw conf::UsageError("unknown driver '" + o.driver + "' (llvmpipe, softpipe or egl)");
-  if (o.inProcess && o.runnerControls)
+  if (run.inProcess && o.runnerControls)
     throw conf::UsageError("--in-process cannot run the runner's control cases: they end the process");
-  if (o.timeout < 0) throw conf::UsageError("--timeout must be 0 (none) or a number of seconds");
+  if (run.timeLimitSeconds < 0) throw conf::UsageError("--timeout must be 0 (none) or a number of seconds");
   run.driver = *driver;
-  run.filter = o.filter;
-  run.profile = o.profile;
-  run.outDir = o.out;
-  run.threads = o.threads;
-  run.allImages = o.allImages;
-  run.command = o.command;
-  run.jobs = o.jobs;
   run.shard = shardOptionOrCi(o.shard, run.shardFrom);  // GitLab's parallel: N sets the CI variables
-  run.caseLists = o.caseLists;
-  run.failsFiles = o.fails;
-  run.flakesFiles = o.flakes;
-  run.skipsFiles = o.skips;
-  run.flakeReruns = o.flakeReruns;
-  run.fraction = o.fraction;
-  run.rendererCheck = o.rendererCheck;
-  run.versionCheck = o.versionCheck;
-  run.junit.limit = o.junitLimit;
-  run.junit.linkTemplate = o.junitTemplate;
-  run.junit.idPrefix = o.prefix;
-  run.slowest = o.slowest;
-  run.timeLimitSeconds = o.timeout;
-  run.inProcess = o.inProcess;
-  run.baseline = o.baseline;
   try {
     return conf::runConformance(run, catalogue(o.runnerControls), std::cout).exitCode;
   } catch (const gpu::GlUnavailable& e) {
@@ -78,52 +43,55 @@ int runConform(const ConformOptions& o) {
 
 Subcommand addConformCommand(CLI::App& app, const std::string& invocation) {
   auto o = std::make_shared<ConformOptions>();
-  o->command = invocation;
+  o->run.command = invocation;
   CLI::App* sub =
       app.add_subcommand("conform", "run cases on a GL driver against emulation and reference; write a report");
-  sub->add_option("--filter", o->filter, "shell-style glob on case ids")->default_val("*");
+  sub->add_option("--filter", o->run.filter, "shell-style glob on case ids")->default_val("*");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
-  sub->add_option("--profile", o->profile,
+  sub->add_option("--profile", o->run.profile,
                   "auto (by GL_RENDERER, else the probe), envelope, a profile name, or a driver file FILE.json that "
                   "voxref probe --out wrote")
       ->default_val("auto");
-  sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
+  sub->add_option("--out", o->run.outDir, "report directory (results.json, junit.xml, index.html)")
       ->default_val("voxref-report");
-  sub->add_option("--threads", o->threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
-  sub->add_flag("--all-images", o->allImages, "write images for every case, not only failing and warned ones");
-  sub->add_option("--jobs,-j", o->jobs, "case processes at once; results do not depend on it")->default_val(1);
+  sub->add_option("--threads", o->run.threads, "CPU threads for emulation and reference (0: all)")->default_val(0);
+  sub->add_flag("--all-images", o->run.allImages, "write images for every case, not only failing and warned ones");
+  sub->add_option("--jobs,-j", o->run.jobs, "case processes at once; results do not depend on it")->default_val(1);
   sub->add_option("--shard", o->shard, "I/N: run only shard I of N of the selection (round robin, catalogue order)");
-  sub->add_option("--timeout", o->timeout,
+  sub->add_option("--timeout", o->run.timeLimitSeconds,
                   "seconds a case may take before it is killed and reported as timeout (0: none)")
       ->default_val(300);
-  sub->add_option("--baseline", o->baseline, "an earlier results.json: report changes; exit 3 when a case regressed");
-  sub->add_flag("--in-process", o->inProcess,
+  sub->add_option("--baseline", o->run.baseline,
+                  "an earlier results.json: report changes; exit 3 when a case regressed");
+  sub->add_flag("--in-process", o->run.inProcess,
                 "run cases in this process, without isolation or time limit (for a debugger)");
   sub->add_flag("--runner-controls", o->runnerControls,
                 "add the runner's control cases (runner.control.*: deliberate driver crash, segfault, abort, exit, "
                 "hang, exception)");
 
   // Running in a CI fleet, as deqp-runner does (docs/ci.md).
-  sub->add_option("--caselist", o->caseLists,
+  sub->add_option("--caselist", o->run.caseLists,
                   "a file of case ids, one per line: the selection (with --filter); repeatable");
-  sub->add_option("--fails", o->fails,
+  sub->add_option("--fails", o->run.failsFiles,
                   "expected failures, 'case.id,Status' per line (deqp-runner's fails file); repeatable");
-  sub->add_option("--flakes", o->flakes, "regular expressions of known flaky cases, one per line; repeatable");
-  sub->add_option("--skips", o->skips, "regular expressions of cases not to run, one per line; repeatable");
-  sub->add_option("--flake-reruns", o->flakeReruns,
+  sub->add_option("--flakes", o->run.flakesFiles, "regular expressions of known flaky cases, one per line; repeatable");
+  sub->add_option("--skips", o->run.skipsFiles, "regular expressions of cases not to run, one per line; repeatable");
+  sub->add_option("--flake-reruns", o->run.flakeReruns,
                   "reruns of a case that fails unexpectedly; a pass on one is a Flake, not a failure")
       ->default_val(1);
-  sub->add_option("--fraction", o->fraction, "run every Nth case of the selection (before --shard)")->default_val(1);
-  sub->add_option("--renderer-check", o->rendererCheck,
+  sub->add_option("--fraction", o->run.fraction, "run every Nth case of the selection (before --shard)")
+      ->default_val(1);
+  sub->add_option("--renderer-check", o->run.rendererCheck,
                   "regular expression GL_RENDERER must match, or the run stops before any case (exit 2)");
-  sub->add_option("--version-check", o->versionCheck,
+  sub->add_option("--version-check", o->run.versionCheck,
                   "regular expression GL_VERSION must match, or the run stops before any case (exit 2)");
-  sub->add_option("--junit-limit", o->junitLimit, "list at most N failed cases in junit.xml (failures.csv has all)");
-  sub->add_option("--junit-template", o->junitTemplate,
+  sub->add_option("--junit-limit", o->run.junit.limit,
+                  "list at most N failed cases in junit.xml (failures.csv has all)");
+  sub->add_option("--junit-template", o->run.junit.linkTemplate,
                   "text added to each failure in junit.xml, {{testcase}} replaced by the case id (a link)");
-  sub->add_option("--prefix", o->prefix,
+  sub->add_option("--prefix", o->run.junit.idPrefix,
                   "put before every case id in the CSV files and junit.xml, and in what the expectation files name");
-  sub->add_option("--slowest", o->slowest, "list the N slowest cases at the end")->default_val(5);
+  sub->add_option("--slowest", o->run.slowest, "list the N slowest cases at the end")->default_val(5);
   return {sub, [o] { return runConform(*o); }};
 }
 

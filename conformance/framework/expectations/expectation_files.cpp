@@ -1,8 +1,9 @@
 #include "conformance/framework/expectations/expectation_files.h"
 
-#include <fstream>
 #include <set>
 #include <sstream>
+
+#include "conformance/io/atomic_file.h"
 
 namespace voxref::conf {
 namespace {
@@ -38,17 +39,13 @@ bool isCaseId(const std::string& s) {
   return s.find("..") == std::string::npos;
 }
 
+// The file through io::readWholeFile, its error named by what the file is ("fails file ...").
 std::string readWhole(const std::filesystem::path& path, const char* what) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw ExpectationFileError(std::string(what) + " " + path.string() + " does not exist");
-  if (std::filesystem::is_directory(path, ec))
-    throw ExpectationFileError(std::string(what) + " " + path.string() + " is a directory, not a file");
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw ExpectationFileError(std::string(what) + " " + path.string() + " cannot be read");
-  return text.str();
+  try {
+    return io::readWholeFile(path);
+  } catch (const io::IoError& e) {
+    throw ExpectationFileError(std::string(what) + " " + e.what());
+  }
 }
 
 // What libstdc++'s std::regex must not see (its compiler multiplies digit runs into a long without

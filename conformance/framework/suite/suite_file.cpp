@@ -1,9 +1,10 @@
 #include "conformance/framework/suite/suite_file.h"
 
 #include <toml++/toml.h>
-#include <fstream>
+
 #include <set>
-#include <sstream>
+
+#include "conformance/io/atomic_file.h"
 
 namespace voxref::conf {
 namespace {
@@ -130,14 +131,13 @@ std::vector<SuiteEntry> parseSuiteText(const std::string& text, const std::files
 }
 
 std::vector<SuiteEntry> readSuiteFile(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
-    throw SuiteFileError("suite file " + file.string() +
-                         (std::filesystem::exists(file, ec) ? " is not a regular file" : " does not exist"));
-  std::ifstream in(file, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parseSuiteText(s.str(), file);
+  std::string text;
+  try {
+    text = io::readWholeFile(file);
+  } catch (const io::IoError& e) {
+    throw SuiteFileError(std::string("suite file ") + e.what());
+  }
+  return parseSuiteText(text, file);
 }
 
 }  // namespace voxref::conf

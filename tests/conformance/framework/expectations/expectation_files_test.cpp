@@ -84,8 +84,7 @@ TEST(CaseList, ReadsIdsAndRefusesDuplicatesAcrossFiles) {
       (dir / "b.txt").string() + ":2: sparsegrid.hard.level1 is already listed at " + (dir / "a.txt").string() + ":2");
   EXPECT_EQ(errorOf([&] { readCaseLists({dir / "missing.txt"}); }),
             "case list " + (dir / "missing.txt").string() + " does not exist");
-  EXPECT_EQ(errorOf([&] { readExpectations({dir}, {}, {}); }),
-            "fails file " + dir.string() + " is a directory, not a file");
+  EXPECT_EQ(errorOf([&] { readExpectations({dir}, {}, {}); }), "fails file " + dir.string() + " is not a regular file");
   std::filesystem::remove_all(dir);
 }
 
