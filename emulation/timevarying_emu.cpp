@@ -183,11 +183,16 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
       break;
     }
     case ref::DecoderVariant::TexelFetch: {
-      auto fetch = [&](const ref::Dims3& d, std::array<int, 3> t, bool index) {
-        if (!inside(d, t)) {
-          if (!profile_->texelFetchOutOfRangeClamps) return std::array<float, 4>{};
-          for (int a = 0; a < 3; ++a) t[a] = std::clamp(t[a], 0, d[a] - 1);
-        }
+      // The texel a texelFetch reads: itself inside the texture; outside, the clamped one where the
+      // driver clamps, else none (zero, kNoTexel).
+      auto resolve = [&](const ref::Dims3& d, std::array<int, 3> t) {
+        if (inside(d, t)) return t;
+        if (!profile_->texelFetchOutOfRangeClamps) return ref::kNoTexel;
+        for (int a = 0; a < 3; ++a) t[a] = std::clamp(t[a], 0, d[a] - 1);
+        return t;
+      };
+      auto fetch = [&](const ref::Dims3& d, const std::array<int, 3>& t, bool index) {
+        if (t == ref::kNoTexel) return std::array<float, 4>{};
         if (!force_) return index ? indexTexel(t) : refinementTexel(t);
         // Forced: the weight stage at the texel's centre, (t + 0.5) / size.
         float centre[3];
@@ -200,6 +205,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
         cell[a] = std::min(glslInt(pc[a] * n), L.cells - 1);
         out.indexTexel[a] = slot[a] * L.cells + cell[a];
       }
+      out.indexTexel = resolve(tex_->index.dims, out.indexTexel);
       c = fetch(tex_->index.dims, out.indexTexel, true);
       out.refined = c[3] == 1.0f;
       if (out.refined) {
@@ -208,6 +214,7 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
           const int voxel = std::min(glslInt(pc[a] * static_cast<float>(L.side)), L.side - 1);
           out.refinementTexel[a] = block * L.blockSide + (voxel - cell[a] * L.blockSide);
         }
+        out.refinementTexel = resolve(tex_->refinement.dims, out.refinementTexel);
         c = fetch(tex_->refinement.dims, out.refinementTexel, false);
       }
       break;
@@ -215,6 +222,10 @@ DecodedSample TimeVaryingDecoderEmu::decode(int step, glm::vec3 p) const {
   }
   out.value = c;
   return out;
+}
+
+std::vector<ref::TexelFetch> fetchesOf(const EmulatedDecode& decoded) {
+  return {decoded.samples.begin(), decoded.samples.end()};
 }
 
 EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,

@@ -21,15 +21,14 @@
 #include "emulation/texture_sampler_emu.h"
 #include "reference/common/plane_frame.h"
 #include "reference/common/rgba.h"
+#include "reference/timevarying/address_textures.h"
 #include "reference/timevarying/decoder_variants.h"
 
 namespace voxref::emu {
 
-struct DecodedSample {
+// What the emulated decoder fetched (as gpu::measureFetchesGl measures it on GL) and wrote.
+struct DecodedSample : ref::TexelFetch {
   std::array<float, 4> value{};  // the fragment colour the shader writes
-  bool discarded = false;        // outside the unit cube: nothing written
-  bool refined = false;          // the index texel carried the refinement flag
-  std::array<int, 3> indexTexel{}, refinementTexel{};
 };
 
 class TimeVaryingDecoderEmu {
@@ -63,6 +62,9 @@ struct EmulatedDecode {
   ref::RgbaStack colours;              // RGBA8 read-back of every plane (0 where discarded)
   std::vector<DecodedSample> samples;  // per sample, same order
 };
+
+// The fetches alone, in the same order.
+std::vector<ref::TexelFetch> fetchesOf(const EmulatedDecode& decoded);
 
 // Every plane decoded separately (no blending), as gpu::decodePlanesGl.
 EmulatedDecode emulateDecodePlanes(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant, int step,

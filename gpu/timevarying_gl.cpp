@@ -69,7 +69,9 @@ void setDecoderUniforms(const GlApi& gl, const Program& program, ref::DecoderVar
 
 enum class Mode { DecodePlanes, Composite };
 
-ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::DecoderVariant variant, int step,
+// `index` and `refinement` in place of the textures' own (the address textures of measureFetchesGl).
+ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, const ref::IndexTexture& indexTexture,
+                   const ref::RefinementTexture& refinementTexture, ref::DecoderVariant variant, int step,
                    const ref::PlaneFrame& frame, Mode mode, const std::function<void(int)>& progress,
                    const ShaderOverride* shader) {
   if (const std::string why = ref::decoderIncompatibility(variant, tex.layout, tex.index.encoding); !why.empty())
@@ -79,10 +81,10 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
   const GlApi& gl = context.gl();
   const ContextInfo& info = context.info();
   const ref::SamplerState nearest{ref::Filter::Nearest, ref::Wrap::ClampToEdge, 0.0};
-  const std::vector<unsigned char> ib = indexBytes(tex.index);
-  Texture3D index(gl, info.max3DTextureSize, tex.index.dims, indexUpload(tex.index.encoding), ib.data(), nearest);
-  Texture3D refinement(gl, info.max3DTextureSize, tex.refinement.dims, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE},
-                       tex.refinement.texels.data(), nearest);
+  const std::vector<unsigned char> ib = indexBytes(indexTexture);
+  Texture3D index(gl, info.max3DTextureSize, indexTexture.dims, indexUpload(indexTexture.encoding), ib.data(), nearest);
+  Texture3D refinement(gl, info.max3DTextureSize, refinementTexture.dims, {GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE},
+                       refinementTexture.texels.data(), nearest);
   ColorTarget target(gl, info.maxRenderbufferSize, ref::FramebufferFormat::RGBA8, frame.width, frame.height);
   const Program program = buildStageProgram(context, decoderStage(variant), shader);
   VertexArray vao(gl);
@@ -135,13 +137,27 @@ ref::RgbaStack run(Context& context, const ref::TimeVaryingTextures& tex, ref::D
 ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
                               int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress,
                               const ShaderOverride* shader) {
-  return run(context, textures, variant, step, frame, Mode::DecodePlanes, progress, shader);
+  return run(context, textures, textures.index, textures.refinement, variant, step, frame, Mode::DecodePlanes, progress,
+             shader);
 }
 
 ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
                            int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress,
                            const ShaderOverride* shader) {
-  return run(context, textures, variant, step, frame, Mode::Composite, progress, shader);
+  return run(context, textures, textures.index, textures.refinement, variant, step, frame, Mode::Composite, progress,
+             shader);
+}
+
+ref::MeasuredFetches measureFetchesGl(Context& context, const ref::TimeVaryingTextures& textures,
+                                      ref::DecoderVariant variant, int step, const ref::PlaneFrame& frame,
+                                      const ShaderOverride* shader) {
+  const ref::IndexTexture indexAddresses = ref::addressIndexTexture(textures.index);
+  const ref::RefinementTexture refinementAddresses = ref::addressRefinementTexture(textures.refinement);
+  const ref::RgbaStack indexPass =
+      run(context, textures, indexAddresses, textures.refinement, variant, step, frame, Mode::DecodePlanes, {}, shader);
+  const ref::RgbaStack refinementPass =
+      run(context, textures, textures.index, refinementAddresses, variant, step, frame, Mode::DecodePlanes, {}, shader);
+  return ref::fetchesFromAddressPasses(textures, frame, indexPass, refinementPass);
 }
 
 }  // namespace voxref::gpu

@@ -11,6 +11,7 @@
 #include "gpu/shader_override.h"
 #include "reference/common/plane_frame.h"
 #include "reference/common/rgba.h"
+#include "reference/timevarying/address_textures.h"
 #include "reference/timevarying/decoder_variants.h"
 
 namespace voxref::gpu {
@@ -28,5 +29,14 @@ ref::RgbaStack decodePlanesGl(Context& context, const ref::TimeVaryingTextures& 
 ref::RgbaStack compositeGl(Context& context, const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
                            int step, const ref::PlaneFrame& frame, const std::function<void(int)>& progress = {},
                            const ShaderOverride* shader = nullptr);
+
+// The texels the decoder fetched at every sample of one step, measured on GL: two decode-planes
+// renders through the same shader with the address textures (reference/timevarying/
+// address_textures.h) in place of the index, then of the refinement texture; formats, extents and
+// sampler state unchanged. Throws as decodePlanesGl, and std::length_error for a texture too large
+// to address.
+ref::MeasuredFetches measureFetchesGl(Context& context, const ref::TimeVaryingTextures& textures,
+                                      ref::DecoderVariant variant, int step, const ref::PlaneFrame& frame,
+                                      const ShaderOverride* shader = nullptr);
 
 }  // namespace voxref::gpu

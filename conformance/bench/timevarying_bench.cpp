@@ -182,7 +182,7 @@ StudyVariant fetchVariant(const std::string& name, const FetchCounts& c, const r
   return v;
 }
 
-BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* profile) {
+BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionProfile* /*measured on GL instead*/) {
   const Dataset& ds = plumes(o)[1];
   const ref::TransferFunction tf = ref::transferFunction("plume");
   const int level = o.quick ? 3 : 4;
@@ -202,9 +202,8 @@ BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionPr
   const int step = static_cast<int>(ds.series.steps.size()) - 1;
   const std::string error = "share of fetches that read another block or voxel than floor(p * side)";
   const std::string memory = "index + refinement texels in use";
-  // The fetches are classified from the emulation under the driver's profile, which equals the GL
-  // read-back bit for bit (voxref conform --filter 'timevarying*'); a driver without a profile
-  // gets its time but no error figure.
+  // The fetches of the first group are measured on GL (gpu::measureFetchesGl, the address
+  // textures), so every driver gets its error figure; the second group's are the emulations'.
   Progress progress("voxref bench study.timevarying", 5 + static_cast<long>(emu::knownProfiles().size()));
   long done = 0;
   StudyGroup address{"decoder and index encoding",
@@ -217,16 +216,11 @@ BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionPr
   for (const V& v : variants) {
     progress.update(done++, v.name);
     const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(ds.series, tf, {level, v.encoding});
-    const Timing g = measure([&] { (void)gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); }, kStudyRuns);
-    StudyVariant sv;
-    if (profile) {
-      const emu::EmulatedDecode decoded = emu::emulateDecodePlanes(tex, v.decoder, step, frame, *profile, o.threads);
-      sv = fetchVariant(v.name, classifyFetches(tex, ds.series, tf, step, frame, decoded), tex);
-    } else {
-      sv.name = v.name;
-      sv.memoryBytes = static_cast<double>(tex.stats.indexBytes + tex.stats.refinementBytes);
-      sv.missing = "no precision profile for this driver: fetches not classified";
-    }
+    ref::RgbaStack colours;
+    const Timing g = measure([&] { colours = gpu::decodePlanesGl(gl, tex, v.decoder, step, frame); }, kStudyRuns);
+    const ref::MeasuredFetches fetched = gpu::measureFetchesGl(gl, tex, v.decoder, step, frame);
+    StudyVariant sv =
+        fetchVariant(v.name, classifyFetches(tex, ds.series, tf, step, frame, fetched.fetches, colours.colours), tex);
     sv.time = g;
     address.variants.push_back(sv);
   }
@@ -247,8 +241,9 @@ BenchTable study(const BenchOptions& o, gpu::Context& gl, const emu::PrecisionPr
     const Timing e = measure(
         [&] { decoded = emu::emulateDecodePlanes(paper, ref::DecoderVariant::Paper, step, frame, p, o.threads); },
         kStudyRuns);
-    StudyVariant sv =
-        fetchVariant(std::string(p.name), classifyFetches(paper, ds.series, tf, step, frame, decoded), paper);
+    StudyVariant sv = fetchVariant(
+        std::string(p.name),
+        classifyFetches(paper, ds.series, tf, step, frame, emu::fetchesOf(decoded), decoded.colours.colours), paper);
     sv.time = e;
     profiles.variants.push_back(sv);
   }

@@ -13,6 +13,7 @@ void FetchCounts::add(const FetchCounts& o) {
   wrongBlock += o.wrongBlock;
   wrongVoxel += o.wrongVoxel;
   wrongColour += o.wrongColour;
+  unexplained += o.unexplained;
   atCoordinateOne += o.atCoordinateOne;
   onBlockFace += o.onBlockFace;
   onVoxelFace += o.onVoxelFace;
@@ -27,6 +28,7 @@ nlohmann::json FetchCounts::toJson() const {
           {"wrong_block", wrongBlock},
           {"wrong_voxel", wrongVoxel},
           {"wrong_colour", wrongColour},
+          {"unexplained", unexplained},
           {"wrong_by_place",
            {{"coordinate_one", atCoordinateOne},
             {"block_face", onBlockFace},
@@ -37,14 +39,14 @@ nlohmann::json FetchCounts::toJson() const {
 
 FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::TimeSeries& input,
                             const ref::TransferFunction& tf, int step, const ref::PlaneFrame& frame,
-                            const emu::EmulatedDecode& decoded) {
+                            const std::vector<ref::TexelFetch>& fetches, const std::vector<ref::Rgba8>& colours) {
   const ref::TimeVaryingLayout& L = tex.layout;
   FetchCounts c;
   std::size_t idx = 0;
   for (int k = 0; k < frame.planes; ++k)
     for (int j = 0; j < frame.height; ++j)
       for (int i = 0; i < frame.width; ++i, ++idx) {
-        const emu::DecodedSample& s = decoded.samples[idx];
+        const ref::TexelFetch& s = fetches[idx];
         if (s.discarded) continue;
         ++c.samples;
         const glm::dvec3 p = frame.sample(i, j, k);  // exact: the frame's lattice
@@ -57,7 +59,7 @@ FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::Time
           voxelFace |= scaled == std::floor(scaled);
           blockFace |= scaled == std::floor(scaled) && static_cast<long>(scaled) % L.blockSide == 0;
         }
-        if (decoded.colours.colours[idx] != ref::inputColour(input, tf, step, p)) ++c.wrongColour;
+        if (colours[idx] != ref::inputColour(input, tf, step, p)) ++c.wrongColour;
         ref::VoxelAddress want;
         bool addressable = true;
         try {
@@ -68,6 +70,7 @@ FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::Time
         bool wrongBlock = !addressable || s.indexTexel != want.indexTexel || s.refined != want.refined,
              wrongVoxel = false;
         if (!wrongBlock && want.refined) {
+          wrongBlock = s.refinementTexel == ref::kNoTexel;
           for (int a = 0; a < 3; ++a)
             wrongBlock |= s.refinementTexel[a] / L.blockSide != want.refinementTexel[a] / L.blockSide;
           wrongVoxel = !wrongBlock && s.refinementTexel != want.refinementTexel;
@@ -91,6 +94,30 @@ FetchCounts classifyFetches(const ref::TimeVaryingTextures& tex, const ref::Time
                 want.refined ? nlohmann::json(want.refinementTexel) : nlohmann::json(nullptr)}});
       }
   return c;
+}
+
+std::vector<ref::Rgba8> coloursOfFetches(const ref::TimeVaryingTextures& textures,
+                                         const std::vector<ref::TexelFetch>& fetches) {
+  std::vector<ref::Rgba8> out(fetches.size(), ref::Rgba8{0, 0, 0, 0});
+  for (std::size_t i = 0; i < fetches.size(); ++i)
+    if (!fetches[i].discarded) out[i] = ref::colourOfFetch(textures, fetches[i]);
+  return out;
+}
+
+std::size_t unexplainedColours(const std::vector<ref::Rgba8>& fetched, const std::vector<ref::TexelFetch>& fetches,
+                               const std::vector<ref::Rgba8>& gl) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < fetches.size(); ++i) n += !fetches[i].discarded && fetched[i] != gl[i];
+  return n;
+}
+
+std::size_t differingFetches(const std::vector<ref::TexelFetch>& a, const std::vector<ref::TexelFetch>& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    n += a[i].discarded != b[i].discarded ||
+         (!a[i].discarded && (a[i].indexTexel != b[i].indexTexel || a[i].refined != b[i].refined ||
+                              (a[i].refined && a[i].refinementTexel != b[i].refinementTexel)));
+  return n;
 }
 
 }  // namespace voxref::conf
