@@ -45,17 +45,45 @@ double halfUp(double x) { return -halfDown(-x); }
 }  // namespace
 
 CombinationEnvelope::CombinationEnvelope(const ref::CombinationTextures& textures, const ref::PlaneFrame& frame,
-                                         const ref::SamplerState& sampler, ref::FramebufferFormat format)
+                                         const ref::SamplerState& sampler, ref::FramebufferFormat format,
+                                         const MeasuredArithmetic& measured)
     : textures_(&textures), frame_(&frame), format_(format) {
   for (const ref::GridTexture& t : textures.textures) lookups_.emplace_back(t.dims, textures.format, t.codes, sampler);
   const int bits = std::min(colourBits(format), colourBits(textures.format));
   threshold_ = std::ldexp(1.0, -(bits - (sampler.filter == ref::Filter::Linear ? 2 : 1)));
+  if (ref::clampsToUnitRange(format) && ref::unormBits(format) == 8) store_ = measured.unorm8Store;
+  floatThreshold_ = measured.floatFiltering && ref::unormBits(textures.format) != 8;
+  if (floatThreshold_) {
+    double largest = 1.0;
+    int extent = 1;
+    for (const ref::GridTexture& t : textures.textures) {
+      for (std::uint32_t c : t.codes) largest = std::max(largest, std::fabs(ref::decodeTexel(textures.format, c)));
+      for (int a = 0; a < 3; ++a) extent = std::max(extent, t.dims[a]);
+    }
+    threshold_ = ref::scaleByPowerOfTwo(largest, -20);
+    const int uvw = std::max(kEnvelopePass.uvwBits, 24 - static_cast<int>(std::ceil(std::log2(extent))));
+    pass_.uvwBits = std::min(uvw, 20);
+    warning_.uvwBits = pass_.uvwBits - 3;
+  }
+}
+
+std::string CombinationEnvelope::basis() const {
+  std::string s;
+  if (floatThreshold_) s = "measured float filtering";
+  if (store_ == MeasuredArithmetic::Store::Nearest) s += std::string(s.empty() ? "" : ", ") + "measured nearest 8-bit stores";
+  if (store_ == MeasuredArithmetic::Store::Floor) s += std::string(s.empty() ? "" : ", ") + "measured floor 8-bit stores";
+  return s.empty() ? "spec" : s;
 }
 
 Interval CombinationEnvelope::storeFixedPoint(double lo, double hi) const {
   const double m = ref::powerOfTwo(ref::unormBits(format_)) - 1.0;
   lo = std::clamp(lo, 0.0, 1.0);
   hi = std::clamp(hi, 0.0, 1.0);
+  const double slack = ref::powerOfTwo(-16);  // codes: the float product x m is within 2^-24 relative
+  if (store_ == MeasuredArithmetic::Store::Nearest)
+    return {std::max(0.0, std::ceil(lo * m - 0.5 - slack)) / m, std::min(m, std::floor(hi * m + 0.5 + slack)) / m};
+  if (store_ == MeasuredArithmetic::Store::Floor)
+    return {std::max(0.0, std::floor(lo * m - slack)) / m, std::min(m, std::floor(hi * m + slack)) / m};
   // Either neighbouring code: floor and ceil, outward by 2^-40 against double rounding.
   const double clo = std::max(0.0, std::floor(lo * m * (1.0 - ref::powerOfTwo(-40))));
   const double chi = std::min(m, std::ceil(hi * m * (1.0 + ref::powerOfTwo(-40))));

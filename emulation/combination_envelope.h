@@ -13,10 +13,23 @@
 //    do not clamp and may round the sum to either neighbouring representable value;
 //  - the destination is the stored value of the previous pass (0 after the clear).
 // Every operation is monotone in each argument, so propagating interval end points is exact.
+//
+// With arithmetic the probe measured (measured_arithmetic.h; derivations in docs/oracles.md,
+// "Envelopes from measured arithmetic") two rules tighten, and nothing else changes:
+//  - float filtering of a non-unorm8 texture: the colour threshold becomes 2^-20 max(1, |texel|max)
+//    (texel conversion and seven float lerps: at most 8 roundings of 2^-24 relative, carried with
+//    weights summing to one) and the subtexel bits 24 - ceil(log2 N) for the largest extent N
+//    (the weight's error is that of the float u N), at least dEQP's 7; a quality warning allows 3
+//    bits fewer;
+//  - an 8-bit store that rounds to nearest (or down) in every pass: the stored code of a real
+//    value x is the nearest code (or the one below), with 2^-16 code of slack either side for the
+//    float product x 255 (relative error 2^-24), instead of either neighbouring code.
 #pragma once
 
+#include <string>
 #include <vector>
 
+#include "emulation/measured_arithmetic.h"
 #include "emulation/texture_envelope.h"
 #include "reference/common/plane_frame.h"
 #include "reference/sparsegrid/combination_textures.h"
@@ -26,11 +39,18 @@ namespace voxref::emu {
 class CombinationEnvelope {
  public:
   CombinationEnvelope(const ref::CombinationTextures& textures, const ref::PlaneFrame& frame,
-                      const ref::SamplerState& sampler, ref::FramebufferFormat format);
+                      const ref::SamplerState& sampler, ref::FramebufferFormat format,
+                      const MeasuredArithmetic& measured = {});
   // The stored values (decoded exactly, framebuffer_codes.h) allowed at sample (i, j, k).
   Interval at(int i, int j, int k, const EnvelopePrecision& precision) const;
   // The colour threshold applied to every pass's source value, and its derivation.
   double colourThreshold() const { return threshold_; }
+  // The precision of a pass and of a quality warning: dEQP's (kEnvelopePass, kEnvelopeQualityWarning),
+  // or from the measured float filtering.
+  const EnvelopePrecision& passPrecision() const { return pass_; }
+  const EnvelopePrecision& warningPrecision() const { return warning_; }
+  // Which measured rules this envelope uses ("spec" when none).
+  std::string basis() const;
 
  private:
   Interval storeFixedPoint(double lo, double hi) const;
@@ -41,6 +61,9 @@ class CombinationEnvelope {
   ref::FramebufferFormat format_;
   std::vector<TextureEnvelope> lookups_;
   double threshold_;
+  EnvelopePrecision pass_ = kEnvelopePass, warning_ = kEnvelopeQualityWarning;
+  MeasuredArithmetic::Store store_ = MeasuredArithmetic::Store::Spec;
+  bool floatThreshold_ = false;
 };
 
 }  // namespace voxref::emu

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "emulation/framebuffer_emu.h"
 #include "emulation/interval_arithmetic.h"
 #include "reference/common/frame_sampling.h"
 #include "reference/common/parallel.h"
+#include "reference/common/rounding.h"
 
 namespace voxref::emu {
 namespace {
@@ -43,7 +45,40 @@ Interval blendChannel(const Interval& s, const Interval& a, const Interval& d) {
   return {std::min(product.lo + kept.lo, 255.0), std::min(product.hi + kept.hi, 255.0)};  // clamped, stored exactly
 }
 
+// A fragment value interval [lo, hi] (in [0, 1] after the clamp) stored to the nearest code, with
+// 2^-16 code of slack for the float product x 255.
+Interval nearestCode(double lo, double hi) {
+  const double slack = ref::powerOfTwo(-16);
+  return {std::clamp(std::ceil(lo * 255.0 - 0.5 - slack), 0.0, 255.0),
+          std::clamp(std::floor(hi * 255.0 + 0.5 + slack), 0.0, 255.0)};
+}
+
+// The measured blend of code intervals: its extremes at the ends of s and d, and over every a.
+Interval measuredBlendChannel(const Interval& s, const Interval& a, const Interval& d,
+                              MeasuredArithmetic::Blend blend) {
+  auto m = [&](int x, int y) {
+    return blend == MeasuredArithmetic::Blend::Mulnorm ? static_cast<int>(mulnorm8(static_cast<std::uint8_t>(x),
+                                                                                   static_cast<std::uint8_t>(y)))
+                                                       : (x * y + 127) / 255;  // round(x y / 255): never a tie
+  };
+  int lo = 255, hi = 0;
+  for (int av = static_cast<int>(a.lo); av <= static_cast<int>(a.hi); ++av) {
+    lo = std::min(lo, std::min(255, m(static_cast<int>(s.lo), av) + m(static_cast<int>(d.lo), 255 - av)));
+    hi = std::max(hi, std::min(255, m(static_cast<int>(s.hi), av) + m(static_cast<int>(d.hi), 255 - av)));
+  }
+  return {static_cast<double>(lo), static_cast<double>(hi)};
+}
+
 }  // namespace
+
+std::string TimeVaryingEnvelope::basis() const {
+  const bool measured = measured_.srcAlphaBlend != MeasuredArithmetic::Blend::Spec &&
+                        measured_.unorm8Store == MeasuredArithmetic::Store::Nearest;
+  return !measured ? "spec"
+         : measured_.srcAlphaBlend == MeasuredArithmetic::Blend::Mulnorm
+             ? "measured nearest 8-bit stores, measured mulnorm blending"
+             : "measured nearest 8-bit stores, measured exact blending";
+}
 
 bool AllowedColours::contains(const ref::Rgba8& c) const {
   for (const RgbaIntervals& b : boxes)
@@ -74,8 +109,9 @@ RgbaIntervals AllowedColours::hull() const {
   return h;
 }
 
-TimeVaryingEnvelope::TimeVaryingEnvelope(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant)
-    : tex_(&textures), variant_(variant) {
+TimeVaryingEnvelope::TimeVaryingEnvelope(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                                         const MeasuredArithmetic& measured)
+    : tex_(&textures), variant_(variant), measured_(measured) {
   if (const std::string why = ref::decoderIncompatibility(variant, textures.layout, textures.index.encoding);
       !why.empty())
     throw std::invalid_argument(why);
@@ -321,6 +357,9 @@ AllowedColours TimeVaryingEnvelope::decoded(int step, const glm::dvec3& p, const
 AllowedColours TimeVaryingEnvelope::composited(int step, const ref::PlaneFrame& frame, int i, int j,
                                                const EnvelopePrecision& prec) const {
   RgbaIntervals dst{point(0.0), point(0.0), point(0.0), point(0.0)};  // glClearColor(0, 0, 0, 0)
+  // The measured rules hold together: nearest stores of the fragment and the integer blend on them.
+  const bool measured = measured_.srcAlphaBlend != MeasuredArithmetic::Blend::Spec &&
+                        measured_.unorm8Store == MeasuredArithmetic::Store::Nearest;
   Fragment f;
   for (int k = frame.planes - 1; k >= 0; --k) {
     fragment(step, frame.sample(i, j, k), prec, f);
@@ -330,9 +369,12 @@ AllowedColours TimeVaryingEnvelope::composited(int step, const ref::PlaneFrame& 
     for (int ch = 0; ch < 4; ++ch) {
       double lo = INFINITY, hi = -INFINITY;
       for (const RgbaIntervals& c : f.colours) lo = std::min(lo, c[ch].lo), hi = std::max(hi, c[ch].hi);
-      src[ch] = level8(std::clamp(lo, 0.0, 1.0) * 255.0, std::clamp(hi, 0.0, 1.0) * 255.0);
+      src[ch] = measured ? nearestCode(std::clamp(lo, 0.0, 1.0), std::clamp(hi, 0.0, 1.0))
+                         : level8(std::clamp(lo, 0.0, 1.0) * 255.0, std::clamp(hi, 0.0, 1.0) * 255.0);
     }
-    for (int ch = 0; ch < 4; ++ch) dst[ch] = blendChannel(src[ch], src[3], dst[ch]);
+    for (int ch = 0; ch < 4; ++ch)
+      dst[ch] = measured ? measuredBlendChannel(src[ch], src[3], dst[ch], measured_.srcAlphaBlend)
+                         : blendChannel(src[ch], src[3], dst[ch]);
   }
   return {{dst}};
 }

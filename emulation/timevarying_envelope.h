@@ -28,6 +28,11 @@
 //    either neighbouring 8-bit level, the sum is clamped and stored (2.3.5.2). An exact result on
 //    a level stays there (float32 blenders' rounding of ~2^-24 relative is not modelled; it can
 //    move a value only across a level it sits on, which RNE-storing drivers never do).
+//  - with arithmetic the probe measured (measured_arithmetic.h, docs/oracles.md): a composite's
+//    fragment colour is stored to the nearest code (store.unorm8_rounding), and each blend is the
+//    measured integer formula min(255, m(s, a) + m(d, 255 - a)) (blend.rgba8_src_alpha), exact on
+//    the code intervals: m is monotone in each argument, so the extremes lie at the ends of s and
+//    d and at some a of its interval, which is enumerated.
 //
 // Where several texels or branches are possible, a decoded sample allows the UNION of their colours
 // (boxes of RGBA codes, one per candidate: a colour must fit one candidate in all four channels).
@@ -47,6 +52,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "emulation/measured_arithmetic.h"
 #include "emulation/texture_envelope.h"
 #include "reference/common/plane_frame.h"
 #include "reference/common/rgba.h"
@@ -75,7 +81,10 @@ struct AllowedColours {
 
 class TimeVaryingEnvelope {
  public:
-  TimeVaryingEnvelope(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant);
+  TimeVaryingEnvelope(const ref::TimeVaryingTextures& textures, ref::DecoderVariant variant,
+                      const MeasuredArithmetic& measured = {});
+  // Which measured rules the composites use ("spec" when none).
+  std::string basis() const;
 
   // The fragment colours (float intervals per channel, one entry per candidate decode) the shader may
   // write at sample point p of `step`; `discarded` when p is outside the unit cube.
@@ -109,6 +118,7 @@ class TimeVaryingEnvelope {
   const ref::TimeVaryingTextures* tex_;
   ref::DecoderVariant variant_;
   RgbaIntervals refinementHull_{};  // every refinement texel: what an unconstrained lookup may read
+  MeasuredArithmetic measured_;
 };
 
 // Per sample of a read-back (`judged`, as emulateDecodePlanes or emulateComposite lay it out): 0

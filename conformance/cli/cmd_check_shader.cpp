@@ -150,7 +150,7 @@ int runCheckShader(const CheckShaderOptions& o) {
   shader.programsBuilt = 0;
 
   io::ensureDirectory(o.out);
-  conf::CaseContext ctx(gl.get(), profile, o.out, o.threads, true);
+  conf::CaseContext ctx(gl.get(), profile, o.out, o.threads, true, conf::envelopeArithmetic(choice.probe));
   ctx.setShaderOverride(&shader);
   conf::RunInfo run;
   run.command = o.command;
@@ -188,7 +188,7 @@ Subcommand addCheckShaderCommand(CLI::App& app, const std::string& invocation) {
                 "print the case's stage: its interface and the built-in shader");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
   sub->add_option("--profile", o->profile,
-                  "auto, probed, envelope, a profile name or a driver file FILE.json (as conform)")
+                  "auto, probed, envelope, measured-envelope, a profile name or a driver file FILE.json (as conform)")
       ->default_val("auto");
   sub->add_option("--out", o->out, "report directory (results.json, junit.xml, index.html)")
       ->default_val("voxref-check-shader");

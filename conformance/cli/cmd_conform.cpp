@@ -49,7 +49,8 @@ Subcommand addConformCommand(CLI::App& app, const std::string& invocation) {
   sub->add_option("--filter", o->run.filter, "shell-style glob on case ids")->default_val("*");
   sub->add_option("--driver", o->driver, "llvmpipe, softpipe or egl")->default_val("llvmpipe");
   sub->add_option("--profile", o->run.profile,
-                  "auto (by GL_RENDERER, else the probe), envelope, a profile name, or a driver file FILE.json that "
+                  "auto (by GL_RENDERER, else the probe), probed, envelope, measured-envelope (the envelope from the "
+                  "probe's measured arithmetic), a profile name, or a driver file FILE.json that "
                   "voxref probe --out wrote")
       ->default_val("auto");
   sub->add_option("--out", o->run.outDir, "report directory (results.json, junit.xml, index.html)")

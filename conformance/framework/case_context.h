@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "emulation/measured_arithmetic.h"
 #include "emulation/profile.h"
 #include "gpu/context.h"
 #include "gpu/shader_override.h"
@@ -19,11 +20,18 @@ namespace voxref::conf {
 class CaseContext {
  public:
   CaseContext(gpu::Context* gl, const emu::PrecisionProfile* profile, std::filesystem::path outDir, int threads,
-              bool writeAllImages)
-      : gl_(gl), profile_(profile), outDir_(std::move(outDir)), threads_(threads), allImages_(writeAllImages) {}
+              bool writeAllImages, emu::MeasuredArithmetic measured = {})
+      : gl_(gl),
+        profile_(profile),
+        outDir_(std::move(outDir)),
+        threads_(threads),
+        allImages_(writeAllImages),
+        measured_(measured) {}
 
   gpu::Context* gl() const { return gl_; }
   const emu::PrecisionProfile* profile() const { return profile_; }  // nullptr: envelope only
+  // What the envelopes may rely on besides the spec (probe/profile_choice.h, envelopeArithmetic).
+  const emu::MeasuredArithmetic& measured() const { return measured_; }
   const std::filesystem::path& outDir() const { return outDir_; }
   int threads() const { return threads_; }
   bool writeAllImages() const { return allImages_; }
@@ -53,6 +61,7 @@ class CaseContext {
   std::filesystem::path outDir_;
   int threads_;
   bool allImages_;
+  emu::MeasuredArithmetic measured_;
   const gpu::ShaderOverride* shaderOverride_ = nullptr;
   std::list<std::pair<std::string, std::shared_ptr<void>>> cache_;
 };

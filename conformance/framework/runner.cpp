@@ -100,7 +100,8 @@ Identity identify(const RunOptions& options) {
 
 // The context a case runs with, under the profile identify() chose.
 std::unique_ptr<CaseContext> makeCaseContext(const RunOptions& options, const Identity& identity, gpu::Context* gl) {
-  return std::make_unique<CaseContext>(gl, identity.profile, options.outDir, options.threads, options.allImages);
+  return std::make_unique<CaseContext>(gl, identity.profile, options.outDir, options.threads, options.allImages,
+                                       envelopeArithmetic(identity.driver.value("probe", nlohmann::json())));
 }
 
 // What a case's process wrote, as the report keeps it.

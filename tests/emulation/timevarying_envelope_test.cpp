@@ -196,6 +196,35 @@ TEST(TimeVaryingEnvelope, ContainsEveryProfilesEmulationOnTheBuiltInScenes) {
   }
 }
 
+// With llvmpipe's measured blending (mulnorm, nearest stores: docs/probe.md) the composite envelope
+// holds llvmpipe's emulation and is never wider than the spec's; softpipe, whose float tile cache
+// blends in float (no per-pass store), leaves it: the measured rule can fail.
+TEST(TimeVaryingEnvelope, MeasuredBlendingHoldsItsDriverAndFailsAnotherFormula) {
+  const ref::TimeSeries series = ref::driftingBlobs(16, 3);
+  const ref::TransferFunction tf = ref::transferFunction("gray");
+  MeasuredArithmetic mulnorm;
+  mulnorm.requantizedPasses = true;
+  mulnorm.unorm8Store = MeasuredArithmetic::Store::Nearest;
+  mulnorm.srcAlphaBlend = MeasuredArithmetic::Blend::Mulnorm;
+  std::size_t outsideSoftpipe = 0;
+  for (const Config& c : kConfigs) {
+    const ref::TimeVaryingTextures tex = ref::encodeTimeVarying(series, tf, {2, c.encoding});
+    const TimeVaryingEnvelope spec(tex, c.decoder), measured(tex, c.decoder, mulnorm);
+    EXPECT_EQ(measured.basis(), "measured nearest 8-bit stores, measured mulnorm blending");
+    const ref::PlaneFrame f = builtInFrames(16, tex.layout.blockSide, tex.layout.cells).back();
+    const ref::RgbaStack composite = emulateComposite(tex, c.decoder, 1, f, *findProfile("llvmpipe"));
+    std::vector<std::uint8_t> specWidths, measuredWidths;
+    (void)envelopeTiers(spec, 1, f, true, composite, 0, &specWidths);
+    ASSERT_EQ(countTier(envelopeTiers(measured, 1, f, true, composite, 0, &measuredWidths), 0),
+              composite.colours.size())
+        << ref::name(c.decoder);
+    for (std::size_t i = 0; i < specWidths.size(); ++i) ASSERT_LE(measuredWidths[i], specWidths[i]);
+    const ref::RgbaStack soft = emulateComposite(tex, c.decoder, 1, f, *findProfile("softpipe"));
+    outsideSoftpipe += soft.colours.size() - countTier(envelopeTiers(measured, 1, f, true, soft), 0);
+  }
+  EXPECT_GT(outsideSoftpipe, 0u);
+}
+
 TEST(TimeVaryingEnvelope, ContainsTheLiteralAndPaperDecodersOnThePapersLayout) {
   const ref::TimeSeries series = ref::driftingBlobs(128, 2);
   ref::TimeVaryingOptions o{4, ref::IndexEncoding::NormalizedRgba8};

@@ -85,7 +85,8 @@ ProfileChoice chooseByProbe(gpu::Context& gl, const emu::PrecisionProfile* named
     return c;
   }
   c.how = why + "no known profile reproduces the probe (" + verdictLine(p.comparisons) +
-          ") and no profile can be built from it (" + built.problem + "); judged by the envelope oracle alone";
+          ") and no profile can be built from it (" + built.problem +
+          "); judged by the envelope oracle alone (--profile measured-envelope relies on what the probe measured)";
   c.probe["chosen_by"] = "probe: none";
   return c;
 }
@@ -141,8 +142,27 @@ ProfileChoice chooseFromFile(gpu::Context& gl, const std::filesystem::path& path
 
 }  // namespace
 
+emu::MeasuredArithmetic envelopeArithmetic(const nlohmann::json& probe) {
+  if (!probe.is_object() || !probe.value("envelope_from_measurements", false)) return {};
+  return emu::measuredArithmetic([&](const char* id) {
+    for (const auto& p : probe.value("properties", nlohmann::json::array()))
+      if (p.value("id", std::string()) == id) return p.value("value", std::string());
+    return std::string();
+  });
+}
+
 ProfileChoice chooseRunProfile(const std::string& choice, gpu::Context& gl) {
   if (choice.size() > 5 && choice.ends_with(".json")) return chooseFromFile(gl, choice);
+  if (choice == "measured-envelope") {
+    const Probed p = probe(gl);
+    ProfileChoice c;
+    c.probe = probeJson(p.fingerprint, p.comparisons);
+    c.probe["chosen_by"] = "probe: measured envelope (asked for)";
+    c.probe["envelope_from_measurements"] = true;
+    c.how = "named on the command line: measured-envelope: no profile; the envelope relies on what the probe "
+            "measured: " + envelopeArithmetic(c.probe).describe();
+    return c;
+  }
   if (choice == "probed") {
     const Probed p = probe(gl);
     const ProbedProfile built =
@@ -163,7 +183,7 @@ ProfileChoice chooseRunProfile(const std::string& choice, gpu::Context& gl) {
   } catch (const std::invalid_argument& e) {
     std::string what = e.what();  // "unknown profile 'x' (known: auto, envelope, NAMES)": and the run's own two
     if (const auto at = what.find("known: auto, envelope, "); at != std::string::npos)
-      what.insert(at + 23, "probed, a driver file FILE.json, ");
+      what.insert(at + 23, "measured-envelope, probed, a driver file FILE.json, ");
     throw UsageError(what);
   }
   if (choice == "auto") return chooseByProbe(gl, c.profile, c.how);

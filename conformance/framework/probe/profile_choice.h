@@ -11,6 +11,9 @@
 //   probed       a profile built from the probed properties even where a known profile matches
 //                (how a calibrated profile is held against what the probe alone would build).
 //   envelope     none: the spec model alone.
+//   measured-envelope  none, but the probe runs and the envelope relies on the arithmetic it
+//                measured (emu::MeasuredArithmetic: float filtering, 8-bit store rounding). Opt-in:
+//                it assumes unorm16 textures filter as the probe's RGBA32F texture does.
 //   NAME         a known profile (emu::knownProfiles()).
 //   FILE.json    the probed profile a driver.json holds, after the probe confirms that the driver
 //                still probes the same: every saved property equal, every probe frame reproduced.
@@ -20,6 +23,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "emulation/measured_arithmetic.h"
 #include "emulation/profile.h"
 #include "gpu/context.h"
 
@@ -36,5 +40,10 @@ struct ProfileChoice {
 // driver.json says ("... no longer probes as driver.json: sampling.float.lerp: probed fused, now
 // unfused"): exit status 2.
 ProfileChoice chooseRunProfile(const std::string& choice, gpu::Context& gl);
+
+// The arithmetic the envelope may rely on in a run whose probe report is `probe` (ProfileChoice::
+// probe): what it measured where the report says so ("envelope_from_measurements"), else the
+// spec's rules (no profile choice relies on both a profile and measurements).
+emu::MeasuredArithmetic envelopeArithmetic(const nlohmann::json& probe);
 
 }  // namespace voxref::conf

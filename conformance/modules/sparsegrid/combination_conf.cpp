@@ -26,6 +26,8 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
   const ref::CodePlanes& judged = envelopeJudged(r);
   r.envelopeJudged = r.gl ? "gl" : "emulation";
   r.envelopeThreshold = envelope.colourThreshold();
+  r.envelopeBasis = envelope.basis();
+  r.envelopeUvwBits = {envelope.passPrecision().uvwBits, envelope.warningPrecision().uvwBits};
   r.envelope.assign(judged.codes.size(), 0);
   std::vector<double> excess(judged.codes.size(), 0.0);
   const int w = r.frame.width, h = r.frame.height;
@@ -36,11 +38,11 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
         const std::size_t idx =
             static_cast<std::size_t>(i) + static_cast<std::size_t>(w) * (j + static_cast<std::size_t>(h) * k);
         const double v = ref::decodeFramebufferCode(judged.format, judged.codes[idx]);
-        const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
+        const emu::Interval pass = envelope.at(i, j, k, envelope.passPrecision());
         widest[static_cast<std::size_t>(k)] = std::max(widest[static_cast<std::size_t>(k)], pass.hi - pass.lo);
         if (pass.contains(v)) continue;
         excess[idx] = v < pass.lo ? pass.lo - v : v - pass.hi;
-        r.envelope[idx] = envelope.at(i, j, k, emu::kEnvelopeQualityWarning).contains(v) ? 1 : 2;
+        r.envelope[idx] = envelope.at(i, j, k, envelope.warningPrecision()).contains(v) ? 1 : 2;
       }
   });
   r.envelopeWidest = widest.empty() ? 0.0 : *std::max_element(widest.begin(), widest.end());
@@ -50,7 +52,7 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
     if (r.envelopeFail++ >= 20) continue;
     const int i = static_cast<int>(idx % w), j = static_cast<int>((idx / w) % h),
               k = static_cast<int>(idx / (static_cast<std::size_t>(w) * h));
-    const emu::Interval pass = envelope.at(i, j, k, emu::kEnvelopePass);
+    const emu::Interval pass = envelope.at(i, j, k, envelope.passPrecision());
     r.envelopeFailures.push_back({{"sample", {i, j, k}},
                                   {"value", ref::decodeFramebufferCode(judged.format, judged.codes[idx])},
                                   {"allowed", {pass.lo, pass.hi}}});
@@ -103,7 +105,7 @@ void pickWorstSamples(CombinationPlanes& r, const emu::CombinationEnvelope* enve
     p.emulated = value(emulated, s);
     p.reference = r.reference.values[s];
     if (envelope) {
-      const emu::Interval pass = envelope->at(p.x, p.y, p.k, emu::kEnvelopePass);
+      const emu::Interval pass = envelope->at(p.x, p.y, p.k, envelope->passPrecision());
       p.allowed = std::make_pair(r.readbackScale * pass.lo, r.readbackScale * pass.hi);
     }
     r.worst.push_back(p);
@@ -198,7 +200,7 @@ std::shared_ptr<CombinationPlanes> computeCombinationPlanes(CaseContext& ctx, co
   std::optional<emu::CombinationEnvelope> envelope;
   std::vector<double> excess;
   if (r->gl || r->emulated) {
-    envelope.emplace(textures, r->frame, scene.sampler, envelopeJudged(*r).format);
+    envelope.emplace(textures, r->frame, scene.sampler, envelopeJudged(*r).format, ctx.measured());
     excess = judgeEnvelope(*r, *envelope, threads);
   }
   if (r->gl && profile) findDepartures(*r, textures, *profile, threads);
@@ -259,10 +261,11 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
                {"quality_warning", r.envelopeWarn},
                {"fail", r.envelopeFail},
                {"colour_threshold", r.envelopeThreshold},
+               {"basis", r.envelopeBasis},
                {"precision",
                 {{"coord_bits", emu::kEnvelopePass.coordBits},
-                 {"uvw_bits_pass", emu::kEnvelopePass.uvwBits},
-                 {"uvw_bits_warning", emu::kEnvelopeQualityWarning.uvwBits},
+                 {"uvw_bits_pass", r.envelopeUvwBits.first},
+                 {"uvw_bits_warning", r.envelopeUvwBits.second},
                  {"division_ulps", emu::kEnvelopePass.divisionUlps}}},
                {"failures", r.envelopeFailures}};
   // How much the envelope can tell: its widest interval against the spread of the true values.

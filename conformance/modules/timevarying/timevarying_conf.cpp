@@ -389,7 +389,7 @@ CaseResult judgeTimeVarying(CaseContext& ctx, const std::string& id, const std::
   const TimeVaryingRun run = prepareRun(ctx, scene, result);
   StepTally tally;
   tally.departureChanges.assign(run.departures.size(), 0);
-  TimeVaryingEnvelopeOracle envelope(run.tex, scene.decoder, run.frame, scene.composite);
+  TimeVaryingEnvelopeOracle envelope(run.tex, scene.decoder, run.frame, scene.composite, ctx.measured());
   std::vector<PixelFlag> flags(static_cast<std::size_t>(run.frame.width) * run.frame.height, PixelFlag::None);
   const std::vector<int> steps = stepsOf(scene);
   for (int step : steps) measureStep(ctx, run, scene, step, tally, envelope, flags, result);

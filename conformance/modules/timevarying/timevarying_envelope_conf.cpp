@@ -16,8 +16,8 @@ constexpr const char* kChannels = "rgba";
 
 TimeVaryingEnvelopeOracle::TimeVaryingEnvelopeOracle(const ref::TimeVaryingTextures& textures,
                                                      ref::DecoderVariant decoder, const ref::PlaneFrame& frame,
-                                                     bool composite)
-    : envelope_(textures, decoder), frame_(&frame), composite_(composite) {}
+                                                     bool composite, const emu::MeasuredArithmetic& measured)
+    : envelope_(textures, decoder, measured), frame_(&frame), composite_(composite) {}
 
 PixelValues TimeVaryingEnvelopeOracle::valuesAt(std::size_t idx, int channel, const ref::RgbaStack* gl,
                                                 const ref::RgbaStack* emulated, const ref::RgbaStack& reference) const {
@@ -124,6 +124,7 @@ OracleResult TimeVaryingEnvelopeOracle::result() const {
                {"unit", "rgba8 code"},
                {"widest_allowed_codes", widestCodes_},  // per-channel hull width over the candidates
                {"widest_at", widestAt_},
+               {"basis", composite_ ? envelope_.basis() : std::string("spec")},
                {"union", composite_ ? "per-channel hull of the candidates, propagated through the blend"
                                     : "union of per-candidate RGBA boxes"},
                {"precision",

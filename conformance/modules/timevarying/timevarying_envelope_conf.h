@@ -27,7 +27,7 @@ class TimeVaryingEnvelopeOracle {
  public:
   // Throws std::invalid_argument as TimeVaryingEnvelope does.
   TimeVaryingEnvelopeOracle(const ref::TimeVaryingTextures& textures, ref::DecoderVariant decoder,
-                            const ref::PlaneFrame& frame, bool composite);
+                            const ref::PlaneFrame& frame, bool composite, const emu::MeasuredArithmetic& measured = {});
 
   // One step. gl and emulated may be null (not run); nothing is judged when both are. `flags`
   // (width x height), when given, receives this step's flags (call it for the first step only).
