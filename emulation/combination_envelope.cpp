@@ -70,8 +70,10 @@ CombinationEnvelope::CombinationEnvelope(const ref::CombinationTextures& texture
 std::string CombinationEnvelope::basis() const {
   std::string s;
   if (floatThreshold_) s = "measured float filtering";
-  if (store_ == MeasuredArithmetic::Store::Nearest) s += std::string(s.empty() ? "" : ", ") + "measured nearest 8-bit stores";
-  if (store_ == MeasuredArithmetic::Store::Floor) s += std::string(s.empty() ? "" : ", ") + "measured floor 8-bit stores";
+  if (store_ == MeasuredArithmetic::Store::Nearest)
+    s += std::string(s.empty() ? "" : ", ") + "measured nearest 8-bit stores";
+  if (store_ == MeasuredArithmetic::Store::Floor)
+    s += std::string(s.empty() ? "" : ", ") + "measured floor 8-bit stores";
   return s.empty() ? "spec" : s;
 }
 

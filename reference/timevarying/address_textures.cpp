@@ -55,8 +55,7 @@ IndexTexture addressIndexTexture(const IndexTexture& index) {
   IndexTexture out{index.encoding, index.dims, std::vector<std::uint32_t>(index.texels.size())};
   forEachTexel(index.dims, [&](std::size_t n, const std::array<int, 3>& t) {
     const Rgba8 code = addressCode(t);
-    for (int ch = 0; ch < 4; ++ch)
-      switch (index.encoding) {
+    for (int ch = 0; ch < 4; ++ch) switch (index.encoding) {
         case IndexEncoding::NormalizedRgba16:
           out.texels[4 * n + ch] = 257u * code[ch];  // code / 255 exactly, as the index stores colours
           break;

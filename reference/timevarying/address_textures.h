@@ -39,8 +39,8 @@ RefinementTexture addressRefinementTexture(const RefinementTexture& refinement);
 
 // What a decoder fetched for one sample of a plane frame.
 struct TexelFetch {
-  bool discarded = false;  // outside the unit cube: nothing fetched
-  bool refined = false;    // the fetched index texel carries the refinement flag
+  bool discarded = false;                              // outside the unit cube: nothing fetched
+  bool refined = false;                                // the fetched index texel carries the refinement flag
   std::array<int, 3> indexTexel{}, refinementTexel{};  // the texels read (kNoTexel: none, zero returned)
 };
 

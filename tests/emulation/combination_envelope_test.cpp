@@ -92,11 +92,11 @@ TEST(MeasuredCombinationEnvelope, AWrongStoreRuleFails) {
   for (int k = 0; k < s.frame.planes; ++k)
     for (int j = 0; j < s.frame.height; ++j)
       for (int i = 0; i < s.frame.width; ++i)
-        outside += !measured.at(i, j, k, measured.passPrecision())
-                        .contains(ref::decodeFramebufferCode(
-                            ref::FramebufferFormat::RGBA8,
-                            emulated.planes.codes[i + static_cast<std::size_t>(s.frame.width) *
-                                                          (j + s.frame.height * k)]));
+        outside +=
+            !measured.at(i, j, k, measured.passPrecision())
+                 .contains(ref::decodeFramebufferCode(
+                     ref::FramebufferFormat::RGBA8,
+                     emulated.planes.codes[i + static_cast<std::size_t>(s.frame.width) * (j + s.frame.height * k)]));
   EXPECT_GT(outside, 0u);
 }
 

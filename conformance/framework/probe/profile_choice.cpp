@@ -159,8 +159,10 @@ ProfileChoice chooseRunProfile(const std::string& choice, gpu::Context& gl) {
     c.probe = probeJson(p.fingerprint, p.comparisons);
     c.probe["chosen_by"] = "probe: measured envelope (asked for)";
     c.probe["envelope_from_measurements"] = true;
-    c.how = "named on the command line: measured-envelope: no profile; the envelope relies on what the probe "
-            "measured: " + envelopeArithmetic(c.probe).describe();
+    c.how =
+        "named on the command line: measured-envelope: no profile; the envelope relies on what the probe "
+        "measured: " +
+        envelopeArithmetic(c.probe).describe();
     return c;
   }
   if (choice == "probed") {

@@ -47,9 +47,9 @@ struct CombinationPlanes {
   std::size_t envelopeWarn = 0, envelopeFail = 0;
   nlohmann::json envelopeFailures = nlohmann::json::array();  // the first failing values with intervals
   double envelopeThreshold = 0.0;
-  std::string envelopeBasis = "spec";              // emu::CombinationEnvelope::basis
-  std::pair<int, int> envelopeUvwBits{7, 4};       // subtexel bits of a pass and of a quality warning
-  double envelopeWidest = 0.0;  // the widest pass interval over all samples (its discriminating power)
+  std::string envelopeBasis = "spec";         // emu::CombinationEnvelope::basis
+  std::pair<int, int> envelopeUvwBits{7, 4};  // subtexel bits of a pass and of a quality warning
+  double envelopeWidest = 0.0;                // the widest pass interval over all samples (its discriminating power)
   std::vector<Finding> departures;
   // Envelope failures and warnings at samples that no departure changes: a finding the model of
   // the driver does not explain.

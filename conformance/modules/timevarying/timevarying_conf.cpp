@@ -211,8 +211,8 @@ void compareStep(const ref::RgbaStack* gl, const ref::RgbaStack* emulated, const
 // The texels GL fetched in one step, measured through the address textures; nothing (and why, in
 // tally.fetchesNotMeasured) where they cannot be.
 std::optional<ref::MeasuredFetches> measureFetchesOnGl(CaseContext& ctx, const TimeVaryingRun& run,
-                                                        const TimeVaryingScene& scene, int step, StepTally& tally,
-                                                        CaseResult& result) {
+                                                       const TimeVaryingScene& scene, int step, StepTally& tally,
+                                                       CaseResult& result) {
   if (!ctx.gl() || !tally.glNotRun.empty()) {
     tally.fetchesNotMeasured = !ctx.gl() ? "no GL context in this run" : "GL not run: " + tally.glNotRun;
     return std::nullopt;
@@ -247,7 +247,8 @@ void tallyFetches(const TimeVaryingRun& run, const TimeVaryingScene& scene, int 
   const bool decodedOnGl = gl && !scene.composite;
   FetchCounts c = classifyFetches(run.tex, *run.series, run.tf, step, run.frame, measured->fetches,
                                   decodedOnGl ? gl->colours : fetched);
-  c.unexplained = measured->unreadable + (decodedOnGl ? unexplainedColours(fetched, measured->fetches, gl->colours) : 0);
+  c.unexplained =
+      measured->unreadable + (decodedOnGl ? unexplainedColours(fetched, measured->fetches, gl->colours) : 0);
   tally.fetches.add(c);
   if (decoded) {
     tally.fetchesCompared += measured->fetches.size();
@@ -295,10 +296,10 @@ OracleResult exactOracle(const StepTally& t, std::size_t steps, bool haveProfile
           t.mismatched || !fetchesHold ? Verdict::Fail : Verdict::Pass,
           std::to_string(t.mismatched) + " of " + std::to_string(t.compared) + " RGBA samples differ over " +
               std::to_string(steps) + " time step(s)" +
-              (t.fetchesCompared ? "; " + std::to_string(t.fetchesDifferingFromEmulation) + " of " +
-                                       std::to_string(t.fetchesCompared) +
-                                       " texel fetches measured on GL differ from the emulation's"
-                                 : std::string()),
+              (t.fetchesCompared
+                   ? "; " + std::to_string(t.fetchesDifferingFromEmulation) + " of " +
+                         std::to_string(t.fetchesCompared) + " texel fetches measured on GL differ from the emulation's"
+                   : std::string()),
           {{"compared_samples", t.compared},
            {"mismatched_samples", t.mismatched},
            {"mismatched_pixels", t.mismatched},
@@ -314,7 +315,8 @@ OracleResult exactOracle(const StepTally& t, std::size_t steps, bool haveProfile
 OracleResult fetchOracle(const StepTally& t, const TimeVaryingExpectation& expect, bool haveProfile) {
   const FetchCounts& f = t.fetches;
   if (!t.fetchesOnGl && !haveProfile)
-    return {"fetch", Verdict::NotRun, "fetches not measured on GL (" + t.fetchesNotMeasured + ") and no profile to emulate them",
+    return {"fetch", Verdict::NotRun,
+            "fetches not measured on GL (" + t.fetchesNotMeasured + ") and no profile to emulate them",
             nlohmann::json::object()};
   const bool clean = f.wrong() == 0 && f.wrongColour == 0;
   Verdict v = expect.everyFetchRight  ? (clean ? Verdict::Pass : Verdict::Fail)
@@ -324,7 +326,8 @@ OracleResult fetchOracle(const StepTally& t, const TimeVaryingExpectation& expec
   nlohmann::json figures = f.toJson();
   figures["measured_on"] = t.fetchesOnGl ? "gl" : "emulation";
   return {"fetch", v,
-          std::string(t.fetchesOnGl ? "measured on GL: " : "emulated (not measured on GL: " + t.fetchesNotMeasured + "): ") +
+          std::string(t.fetchesOnGl ? "measured on GL: "
+                                    : "emulated (not measured on GL: " + t.fetchesNotMeasured + "): ") +
               std::to_string(f.wrong()) + " of " + std::to_string(f.samples) + " fetches wrong (" +
               std::to_string(f.wrongBlock) + " wrong block, " + std::to_string(f.wrongVoxel) + " wrong voxel; " +
               std::to_string(f.atCoordinateOne) + " at 1.0, " + std::to_string(f.onBlockFace) + " on block faces, " +
