@@ -47,7 +47,11 @@ double halfUp(double x) { return -halfDown(-x); }
 CombinationEnvelope::CombinationEnvelope(const ref::CombinationTextures& textures, const ref::PlaneFrame& frame,
                                          const ref::SamplerState& sampler, ref::FramebufferFormat format,
                                          const MeasuredArithmetic& measured)
-    : textures_(&textures), frame_(&frame), format_(format) {
+    : textures_(&textures),
+      frame_(&frame),
+      format_(format),
+      measuredAny_(measured.any()),
+      texelFormat_(textures.format) {
   for (const ref::GridTexture& t : textures.textures) lookups_.emplace_back(t.dims, textures.format, t.codes, sampler);
   const int bits = std::min(colourBits(format), colourBits(textures.format));
   threshold_ = std::ldexp(1.0, -(bits - (sampler.filter == ref::Filter::Linear ? 2 : 1)));
@@ -75,6 +79,24 @@ std::string CombinationEnvelope::basis() const {
   if (store_ == MeasuredArithmetic::Store::Floor)
     s += std::string(s.empty() ? "" : ", ") + "measured floor 8-bit stores";
   return s.empty() ? "spec" : s;
+}
+
+std::string CombinationEnvelope::specStages() const {
+  if (!measuredAny_)
+    return "every stage at the spec's rules: no measured arithmetic (--profile measured-envelope derives it from the "
+           "probe)";
+  std::string s;
+  const auto add = [&s](const std::string& stage) { s += (s.empty() ? "" : "; ") + stage; };
+  if (!floatThreshold_)
+    add(ref::unormBits(texelFormat_) == 8
+            ? "the lookup of an 8-bit texture (the probe measures float filtering, not how a driver filters unorm8)"
+            : "the lookup (the probe did not determine float filtering)");
+  if (ref::clampsToUnitRange(format_) && store_ == MeasuredArithmetic::Store::Spec)
+    add(ref::unormBits(format_) == 8
+            ? "the 8-bit store (the probe did not determine a per-pass rounding)"
+            : "the " + std::to_string(ref::unormBits(format_)) + "-bit store (the probe measures 8-bit stores only)");
+  if (!ref::clampsToUnitRange(format_)) add("the float blend (the probe does not measure float blend rounding)");
+  return s;
 }
 
 Interval CombinationEnvelope::storeFixedPoint(double lo, double hi) const {

@@ -51,6 +51,10 @@ class CombinationEnvelope {
   const EnvelopePrecision& warningPrecision() const { return warning_; }
   // Which measured rules this envelope uses ("spec" when none).
   std::string basis() const;
+  // The stages of this scene the envelope still bounds by the spec's rules, each with the reason
+  // no measured rule replaces it (empty when every stage uses a measured rule): what a blind
+  // envelope says in its case (issue 16, item 5: "say in the case when none can").
+  std::string specStages() const;
 
  private:
   Interval storeFixedPoint(double lo, double hi) const;
@@ -64,6 +68,8 @@ class CombinationEnvelope {
   EnvelopePrecision pass_ = kEnvelopePass, warning_ = kEnvelopeQualityWarning;
   MeasuredArithmetic::Store store_ = MeasuredArithmetic::Store::Spec;
   bool floatThreshold_ = false;
+  bool measuredAny_ = false;
+  ref::TexelFormat texelFormat_;
 };
 
 }  // namespace voxref::emu

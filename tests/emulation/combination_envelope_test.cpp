@@ -100,5 +100,29 @@ TEST(MeasuredCombinationEnvelope, AWrongStoreRuleFails) {
   EXPECT_GT(outside, 0u);
 }
 
+// What a blind case says: each stage still bounded by the spec's rule, with why no measurement replaces it.
+TEST(MeasuredCombinationEnvelope, NamesTheStagesLeftAtTheSpecsRules) {
+  const Scene s(3);
+  EXPECT_NE(CombinationEnvelope(s.textures, s.frame, {}, ref::FramebufferFormat::RGBA8)
+                .specStages()
+                .find("no measured arithmetic"),
+            std::string::npos);
+  EXPECT_EQ(
+      CombinationEnvelope(s.textures, s.frame, {}, ref::FramebufferFormat::RGBA8, fromValues(kLlvmpipe)).specStages(),
+      "");
+  const std::string rgba12 =
+      CombinationEnvelope(s.textures, s.frame, {}, ref::FramebufferFormat::RGBA12, fromValues(kLlvmpipe)).specStages();
+  EXPECT_EQ(rgba12, "the 12-bit store (the probe measures 8-bit stores only)");
+  const std::string half =
+      CombinationEnvelope(s.textures, s.frame, {}, ref::FramebufferFormat::RGBA16F, fromValues(kLlvmpipe)).specStages();
+  EXPECT_NE(half.find("float blend"), std::string::npos);
+  ref::CombinationTextures r8 = s.textures;
+  r8.format = ref::TexelFormat::R8;
+  EXPECT_NE(CombinationEnvelope(r8, s.frame, {}, ref::FramebufferFormat::RGBA8, fromValues(kLlvmpipe))
+                .specStages()
+                .find("8-bit texture"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace voxref::emu

@@ -27,6 +27,7 @@ std::vector<double> judgeEnvelope(CombinationPlanes& r, const emu::CombinationEn
   r.envelopeJudged = r.gl ? "gl" : "emulation";
   r.envelopeThreshold = envelope.colourThreshold();
   r.envelopeBasis = envelope.basis();
+  r.envelopeSpecStages = envelope.specStages();
   r.envelopeUvwBits = {envelope.passPrecision().uvwBits, envelope.warningPrecision().uvwBits};
   r.envelope.assign(judged.codes.size(), 0);
   std::vector<double> excess(judged.codes.size(), 0.0);
@@ -275,6 +276,7 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
   o.figures["widest_allowed"] = r.envelopeWidest;
   o.figures["reference_spread"] = spread;
   o.figures["blind"] = r.envelopeWidest >= spread;
+  o.figures["spec_stages"] = r.envelopeSpecStages;
   // It judges GL only where GL ran and its intervals can tell GL's output from a constant.
   if (r.envelopeJudged == "gl" && r.envelopeWidest < spread) o.judges = Judge::Envelope;
   if (!r.departures.empty()) {
@@ -313,6 +315,10 @@ OracleResult envelopeOracle(const CombinationPlanes& r, std::vector<PixelFlag>& 
         "can tell this scene's output from a constant",
         r.envelopeWidest, spread);
     o.summary += note;
+    // Why no tighter bound: the stages still at the spec's rules, or that every stage is measured.
+    o.summary +=
+        "; no tighter bound derived: " +
+        (r.envelopeSpecStages.empty() ? std::string("every stage already uses a measured rule") : r.envelopeSpecStages);
   }
   return o;
 }

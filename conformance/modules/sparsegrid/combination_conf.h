@@ -48,6 +48,7 @@ struct CombinationPlanes {
   nlohmann::json envelopeFailures = nlohmann::json::array();  // the first failing values with intervals
   double envelopeThreshold = 0.0;
   std::string envelopeBasis = "spec";         // emu::CombinationEnvelope::basis
+  std::string envelopeSpecStages;             // emu::CombinationEnvelope::specStages
   std::pair<int, int> envelopeUvwBits{7, 4};  // subtexel bits of a pass and of a quality warning
   double envelopeWidest = 0.0;                // the widest pass interval over all samples (its discriminating power)
   std::vector<Finding> departures;
