@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "conformance/bench/baselines.h"
+#include "conformance/bench/leb_scale_bench.h"
 #include "conformance/bench/study.h"
 #include "conformance/framework/progress.h"
 #include "conformance/io/raw_volume.h"
@@ -231,7 +232,7 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
 
 struct PageSet {
   const ref::LebChannel* channel;
-  std::vector<std::uint64_t> values;  // per page
+  std::vector<std::uint64_t> values;  // per stored page
 };
 
 // Decodes every page of both channels (the lead-1 decoder alone: the paper's "decompression
@@ -242,7 +243,7 @@ double decodePagesOnly(const ref::LebStream& s, const std::vector<PageSet>& sets
     const int pages = static_cast<int>(p.values.size());
     ref::parallelFor(pages, threads, [&](int i) {
       std::vector<std::int32_t> out(static_cast<std::size_t>(p.values[static_cast<std::size_t>(i)]));
-      p.channel->decoder->decodePage(s.page(*p.channel, static_cast<std::uint64_t>(i)), out, 0, "page");
+      p.channel->decoder->decodePage(s.page(*p.channel, static_cast<std::size_t>(i)), out, 0, "page");
     });
     for (std::uint64_t v : p.values) outBytes += static_cast<double>(v) * (p.channel->valueBits / 8);
   }
@@ -254,8 +255,8 @@ std::vector<PageSet> pageSets(const ref::LebStream& s) {
   std::vector<PageSet> sets;
   for (const ref::LebChannel& c : s.channels) {
     PageSet p{&c, {}};
-    for (std::uint64_t i = 0; i < s.pageCount(); ++i)
-      p.values.push_back(ref::insidePointsOfPage(order, s.dims, s.pageBits, i) *
+    for (const std::uint32_t page : c.storedPage)
+      p.values.push_back(ref::insidePointsOfPage(order, s.dims, s.pageBits, page) *
                          static_cast<std::uint64_t>(c.components));
     sets.push_back(std::move(p));
   }
@@ -473,13 +474,20 @@ BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
 
 }  // namespace
 
-std::vector<std::string> lebBenchIds() { return {"leb.table1", "leb.decode_speed", "leb.page_size", "study.leb"}; }
+std::vector<std::string> lebBenchIds() {
+  return {"leb.table1", "leb.decode_speed", "leb.page_size", kLebScaleBenchId, "study.leb"};
+}
 
 std::vector<BenchTable> lebBench(const BenchOptions& o) {
   std::vector<BenchTable> tables;
   bool any = false;
   for (const auto& id : lebBenchIds()) any |= globMatch(o.filter, id);
   if (!any) return tables;
+  if (globMatch(o.filter, kLebScaleBenchId)) tables.push_back(lebScaleBench(o));
+  bool needsVolumes = false;  // leb.scale makes its own
+  for (const char* id : {"leb.table1", "leb.decode_speed", "leb.page_size", "study.leb"})
+    needsVolumes |= globMatch(o.filter, id);
+  if (!needsVolumes) return tables;
   const std::vector<LebDataset> sets = datasets(o);
   if (globMatch(o.filter, "leb.table1")) tables.push_back(table1(o, sets));
   if (globMatch(o.filter, "leb.decode_speed")) tables.push_back(decodeSpeed(o, sets));

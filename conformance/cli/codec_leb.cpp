@@ -20,6 +20,7 @@
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/grid_field.h"
 #include "reference/leb/leb_codec.h"
+#include "reference/leb/leb_padding.h"
 
 namespace voxref::cli {
 namespace {
@@ -59,7 +60,8 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
   if (st.gridPoints != st.volumePoints)
     out << "; padding " << (st.gridPoints - st.volumePoints) << " points beyond " << dimsText(s.dims)
         << ", not coded (they take their prediction) and excluded from the ratios";
-  out << "\npages           " << st.pages << " of " << (1u << s.pageBits) << " points\n";
+  out << "\npages           " << st.storedPages << " stored of the grid's " << st.pages << ", each "
+      << (1u << s.pageBits) << " points (pages of padding alone are not stored)\n";
   for (const ref::LebChannelStats& c : st.channels) {
     const bool data = c.kind == ref::LebChannelKind::Data;
     out << (data ? "data            " : "gradients       ") << c.rawBytes << " bytes raw -> " << c.compressedBytes()
@@ -87,8 +89,9 @@ int encodeLebCommand(const EncodeOptions& o) {
   ref::LebEncodeOptions options;
   options.pageBits = o.pageBits;
   options.gradients = !o.noGradients;
-  // What the encoder will allocate is known from the extents: a thin volume pays for the whole
-  // covering grid. Refused before the volume is read when the process may not allocate it.
+  // What the encoder will allocate is known from the extents (the samples, and the padding that
+  // predictions reach: leb_padding.h). Refused before the volume is read when the process may not
+  // allocate it.
   (void)io::voxelsOf(o.inputs[0], dims);  // extents that are not positive or too many: named before any other check
   std::uint64_t need = 0;
   try {
@@ -103,10 +106,11 @@ int encodeLebCommand(const EncodeOptions& o) {
     need += 16 * n * n * n + 5 * ref::sampleCount(dims);  // the bounds and their serialized copy
   }
   const std::string needText =
-      o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (the " +
-      std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) + " that covers " +
-      dimsText(dims) + ", at 2 bytes per point and component, its deltas and the volume" +
-      (o.boundsOut.empty() ? "" : ", and 16 bytes per grid point for the diamond bounds and their file") + ")";
+      o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (" + dimsText(dims) +
+      " samples in the " + std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) +
+      ": the volume, its deltas, gradients and coded pages, and the " +
+      std::to_string(ref::LebPadding::shellPoints(grid, dims)) + " padding points predictions reach" +
+      (o.boundsOut.empty() ? "" : "; and 16 bytes per grid point for the diamond bounds and their file") + ")";
   refuseBeyondAddressSpace(need, needText);
   ref::Volume<std::uint16_t> volume;
   int bits = 8;
@@ -150,15 +154,16 @@ int decodeLebCommand(const DecodeOptions& o) {
   const ref::LebStream s = io::readLebFile(o.input);
   if (!o.gradientsOut.empty() && !s.channel(ref::LebChannelKind::Gradients))
     throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
-  // A small stream can describe a volume whose grid is large (the grid is the cube that covers
-  // the volume): what decoding will allocate is known from the header and refused here, before
-  // any of it is allocated, when it exceeds what this process may still map.
+  // What decoding will allocate is known from the header (the samples, and the padding that
+  // predictions reach): refused here, before any of it is allocated, when it exceeds what this
+  // process may still map.
   const std::uint64_t need =
       ref::lebDecodeMemoryBytes(s) + ref::sampleCount(s.dims) * static_cast<std::uint64_t>(s.sampleBits / 8);
-  const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (the " +
-                               std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) +
-                               " that covers " + dimsText(s.dims) +
-                               ", at 2 bytes per point and component, plus the volume)";
+  const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (" +
+                               dimsText(s.dims) + " samples and their gradients, twice, and the " +
+                               std::to_string(ref::LebPadding::shellPoints(s.grid, s.dims)) +
+                               " padding points of the " + std::to_string(s.grid.pointsPerAxis()) +
+                               "^3 grid of k = " + std::to_string(s.grid.k) + " that predictions reach)";
   refuseBeyondAddressSpace(need, needText);
   ref::LebDecoded d;
   try {

@@ -19,6 +19,8 @@
 // has the predictors it needs.
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +41,16 @@ class HzOrder {
   // (throws std::out_of_range for H >= size()).
   std::uint64_t index(const GridPoint& p) const;
   GridPoint point(std::uint64_t h) const;
+
+  // Calls f(h, p, level, scaleLog2, oddAxes) for every grid point p with index h in [begin, end)
+  // that lies inside the box [0, dims) (the volume), in increasing h, and for no other point: a
+  // block whose far-boundary axes lie outside the box is skipped, and inside a block the Morton
+  // tree of its cells is descended with every subtree that lies past the box or outside the
+  // range cut off whole. So the work follows the points inside, not the grid: a 1025x1x1
+  // volume's 1025 points cost what they are, not the 1025^3 points of the grid. Level -1 (a root
+  // corner) comes with scaleLog2 k and no odd axes.
+  template <class F>
+  void forEachInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
 
  private:
   friend class HzCursor;
@@ -161,6 +173,78 @@ inline void mortonDecode(std::uint64_t code, int count, int* c) {
       break;
     default:
       break;
+  }
+}
+
+namespace hz_detail {
+// The cells of one block under a Morton subtree: the node covers the codes [m0, m0 + 2^(nf r))
+// and, on free axis i, the cells c0[i] + [0, 2^r). Bit level t of free coordinate i is bit
+// t nf + i of the code (mortonEncode), so child j of a node sets bit r - 1 of coordinate i where
+// bit i of j is set, and its codes start at m0 + j 2^(nf (r - 1)).
+template <class Leaf>
+void mortonDescend(int nf, const int* limit, int r, std::uint64_t m0, const int* c0, std::uint64_t mlo,
+                   std::uint64_t mhi, Leaf& leaf) {
+  const std::uint64_t span = std::uint64_t{1} << (nf * r);
+  if (m0 >= mhi || m0 + span <= mlo) return;
+  for (int i = 0; i < nf; ++i)
+    if (c0[i] >= limit[i]) return;  // every cell of the node lies past the box on axis i
+  if (r == 0) return leaf(m0, c0);
+  const std::uint64_t childSpan = span >> nf;
+  for (unsigned j = 0; j < (1u << nf); ++j) {
+    int c[3] = {0, 0, 0};
+    for (int i = 0; i < nf; ++i) c[i] = c0[i] + static_cast<int>(((j >> i) & 1u) << (r - 1));
+    mortonDescend(nf, limit, r - 1, m0 + j * childSpan, c, mlo, mhi, leaf);
+  }
+}
+}  // namespace hz_detail
+
+template <class F>
+void HzOrder::forEachInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const {
+  end = std::min(end, size());
+  const int side = grid_.side();
+  const auto inside = [&](const GridPoint& p) { return p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2]; };
+  for (std::uint64_t h = begin; h < std::min<std::uint64_t>(end, 8); ++h) {
+    const GridPoint p{(h & 1) ? side : 0, (h & 2) ? side : 0, (h & 4) ? side : 0};
+    if (inside(p)) f(h, p, -1, grid_.k, 0u);
+  }
+  for (int level = 0; level < grid_.levelCount(); ++level) {
+    if (levelBegin(level + 1) <= begin) continue;
+    if (levelBegin(level) >= end) break;
+    const Level& lv = levels_[static_cast<std::size_t>(level)];
+    const int scale = 1 << lv.scaleLog2, cellSide = 2 * scale;
+    for (unsigned b = 0; b < 8; ++b) {
+      const Block& blk = lv.blocks[b];
+      const std::uint64_t orientations = blk.orientations.size();
+      if (blk.cells == 0 || blk.begin >= end || blk.begin + blk.cells * orientations <= begin) continue;
+      int axis[3] = {0, 0, 0}, limit[3] = {0, 0, 0}, nf = 0;
+      bool boundaryOutside = false;
+      for (int a = 0; a < 3; ++a) {
+        if ((b >> a) & 1u) {
+          boundaryOutside = boundaryOutside || side >= dims[a];
+        } else {
+          axis[nf] = a;
+          limit[nf++] = (dims[a] + cellSide - 1) / cellSide;  // cells c with cellSide c < dims[a]
+        }
+      }
+      if (boundaryOutside) continue;
+      const std::uint64_t mlo = begin > blk.begin ? (begin - blk.begin) / orientations : 0;
+      const std::uint64_t mhi = std::min(blk.cells, (end - blk.begin + orientations - 1) / orientations);
+      auto leaf = [&](std::uint64_t m, const int* c) {
+        GridPoint base{side, side, side};
+        for (int i = 0; i < nf; ++i) base[axis[i]] = cellSide * c[i];
+        for (std::uint64_t o = 0; o < orientations; ++o) {
+          const std::uint64_t h = blk.begin + m * orientations + o;
+          if (h < begin) continue;
+          if (h >= end) return;
+          const unsigned odd = blk.orientations[o];
+          GridPoint p = base;
+          for (int a = 0; a < 3; ++a) p[a] += ((odd >> a) & 1u) ? scale : 0;
+          if (inside(p)) f(h, p, level, lv.scaleLog2, odd);
+        }
+      };
+      const int origin[3] = {0, 0, 0};
+      hz_detail::mortonDescend(nf, limit, nf == 0 ? 0 : lv.cellBits, 0, origin, mlo, mhi, leaf);
+    }
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "reference/common/byte_stream.h"
@@ -9,6 +10,7 @@
 #include "reference/common/parallel.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/hz_order.h"
+#include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_page.h"
 #include "reference/leb/prediction.h"
 
@@ -26,99 +28,129 @@ ChannelSpec specOf(LebChannelKind kind, int sampleBits) {
 }
 ChannelSpec specOf(const LebChannel& c) { return {c.kind, c.components, c.valueBits, c.isSigned}; }
 
-// The values of a channel on the whole grid, as raw bit patterns (16 bits hold both 16-bit
-// samples and int8 gradient components), stored in bricks of 8^3 points: the split-edge
-// endpoints of the fine levels (most points) lie in the same brick as the point, where a
-// row-major grid would put them a slice apart.
-struct GridValues {
-  GridValues(const LebGrid& grid, const ChannelSpec& s) : spec(s), bricksPerAxis((grid.pointsPerAxis() + 7) / 8) {
-    const auto b = static_cast<std::uint64_t>(bricksPerAxis);
-    raw.assign(b * b * b * 512 * static_cast<std::uint64_t>(spec.components), 0);
+// The values of a channel at its points inside the volume (the samples, or their gradients, in
+// volume order) as the predictor reads them.
+struct InsideValues {
+  const std::uint16_t* data = nullptr;  // data channel
+  const std::int8_t* gradients = nullptr;
+  std::int32_t operator()(std::size_t vi, int k) const {
+    return data ? static_cast<std::int32_t>(data[vi])
+                : static_cast<std::int32_t>(gradients[3 * vi + static_cast<std::size_t>(k)]);
   }
-  std::uint64_t slot(const GridPoint& p) const {
-    const auto b = static_cast<std::uint64_t>(bricksPerAxis);
-    const std::uint64_t brick = static_cast<std::uint64_t>(p[0] >> 3) +
-                                b * (static_cast<std::uint64_t>(p[1] >> 3) + b * static_cast<std::uint64_t>(p[2] >> 3));
-    return brick * 512 + static_cast<std::uint64_t>((p[0] & 7) | (p[1] & 7) << 3 | (p[2] & 7) << 6);
-  }
-  std::int32_t load(std::uint64_t at, int c) const {
-    return wrapSample(raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)],
-                      spec.valueBits, spec.isSigned);
-  }
-  void store(std::uint64_t at, int c, std::int32_t v) {
-    raw[at * static_cast<std::uint64_t>(spec.components) + static_cast<std::uint64_t>(c)] =
-        static_cast<std::uint16_t>(v);
-  }
-  ChannelSpec spec;
-  int bricksPerAxis;
-  std::vector<std::uint16_t> raw;
 };
 
 // The walk both the encoder and the decoder make (section 3.1, steps 2-4 of the reconstruction):
-// points in hierarchical order from `begin` to `end`, each predicted from its split edge, which
-// the walk has already passed. For a point inside the volume valueOf(h, volumeIndex, component,
-// prediction) gives its value (the encoder reads the sample and records the delta; the decoder
-// reads the delta and adds it); a point of the padding takes its prediction.
+// the points inside the volume with index in [begin, end), in hierarchical order, each predicted
+// from its split edge (endpoints inside the volume from `inside`, in the padding from the shell,
+// leb_padding.h); valueOf(vi, component, prediction) gives its value (the encoder reads the sample
+// and records the delta; the decoder reads the delta and writes the sample).
 template <class ValueOf>
-void walkPredictions(const HzOrder& order, const Dims3& dims, GridValues& g, std::uint64_t begin, std::uint64_t end,
-                     ValueOf&& valueOf) {
-  const int comps = g.spec.components;
-  for (HzCursor c(order, begin); c.index() < end; c.next()) {
-    const GridPoint& p = c.point();
-    std::int32_t pred[3] = {0, 0, 0};
-    if (c.level() >= 0) {
-      const SplitEdge e = splitEdgeOf(p, c.scaleLog2(), c.oddAxes());
-      const std::uint64_t ia = g.slot(e.a), ib = g.slot(e.b);
-      for (int k = 0; k < comps; ++k) pred[k] = predictMidpoint(g.load(ia, k), g.load(ib, k));
-    }
-    const std::uint64_t gi = g.slot(p);
-    if (insideVolume(p, dims)) {
-      const std::size_t vi = static_cast<std::size_t>(p[0]) +
-                             static_cast<std::size_t>(dims[0]) *
-                                 (static_cast<std::size_t>(p[1]) + static_cast<std::size_t>(dims[1]) * p[2]);
-      for (int k = 0; k < comps; ++k) g.store(gi, k, valueOf(c.index(), vi, k, pred[k]));
-    } else {
-      for (int k = 0; k < comps; ++k) g.store(gi, k, pred[k]);
-    }
-  }
+void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
+                int components, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
+  order.forEachInside(
+      dims, begin, end, [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
+        const LebValues pred = predictPoint(p, level, scaleLog2, odd, components,
+                                            [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
+        const std::size_t vi = volumeIndex(p, dims);
+        for (int k = 0; k < components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
+      });
 }
 
-// All deltas of a channel in stream order, and where each page's deltas begin.
-struct ChannelDeltas {
-  std::vector<std::int32_t> deltas;
-  std::vector<std::size_t> pageStart;  // pages + 1 entries
+// The deltas of a run of pages, per stored page (the pages that hold a point of the volume).
+struct RunDeltas {
+  std::vector<std::uint32_t> storedPage;
+  std::vector<std::vector<std::int32_t>> pages;
 };
 
-template <class Sample>
-ChannelDeltas predictChannel(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits,
-                             Sample&& sample) {
-  GridValues g(order.grid(), spec);
-  ChannelDeltas out;
-  const std::uint64_t perPage = std::uint64_t{1} << pageBits;
-  const std::uint64_t pages = (order.size() + perPage - 1) / perPage;
-  out.deltas.reserve(static_cast<std::size_t>(sampleCount(dims)) * static_cast<std::size_t>(spec.components));
-  for (std::uint64_t page = 0; page < pages; ++page) {
-    out.pageStart.push_back(out.deltas.size());
-    walkPredictions(order, dims, g, page * perPage, std::min(order.size(), (page + 1) * perPage),
-                    [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
-                      const std::int32_t v = sample(vi, k);
-                      out.deltas.push_back(predictionDelta(v, pred, spec.valueBits));
-                      return v;
-                    });
+// Pages in runs of this many, one run per task: the runs, not the thread count, fix the work.
+constexpr std::uint64_t kPagesPerRun = 64;
+
+// The prediction of one channel over the grid, run by run: the shell of the padding first (it
+// needs only the volume), then any run's deltas on demand, independently of the others.
+class ChannelPrediction {
+ public:
+  ChannelPrediction(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits,
+                    const InsideValues& inside)
+      : order_(order),
+        dims_(dims),
+        spec_(spec),
+        pageBits_(pageBits),
+        inside_(inside),
+        padding_(order.grid(), dims, spec.components) {
+    for (int level = -1; level < order.grid().levelCount(); ++level) padding_.addLevel(level, inside);
   }
-  out.pageStart.push_back(out.deltas.size());
-  return out;
+  std::uint64_t runs() const {
+    const std::uint64_t perPage = std::uint64_t{1} << pageBits_;
+    const std::uint64_t pages = (order_.size() + perPage - 1) / perPage;
+    return (pages + kPagesPerRun - 1) / kPagesPerRun;
+  }
+  RunDeltas run(std::uint64_t r) const {
+    RunDeltas out;
+    const std::uint64_t first = r * kPagesPerRun;
+    walkInside(order_, dims_, padding_, inside_, spec_.components, first << pageBits_,
+               (first + kPagesPerRun) << pageBits_, [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
+                 const auto page = static_cast<std::uint32_t>(h >> pageBits_);
+                 if (out.storedPage.empty() || out.storedPage.back() != page) {
+                   out.storedPage.push_back(page);
+                   out.pages.emplace_back();
+                 }
+                 out.pages.back().push_back(predictionDelta(inside_(vi, k), pred, spec_.valueBits));
+               });
+    return out;
+  }
+
+ private:
+  const HzOrder& order_;
+  Dims3 dims_;
+  ChannelSpec spec_;
+  int pageBits_;
+  InsideValues inside_;
+  LebPadding padding_;
+};
+
+// One channel's payload in two passes over the runs, so that no more than one run's deltas per
+// thread are ever held: the counts for the code (section 3.1: one code for all pages), then the
+// deltas again, each page coded as soon as it is predicted.
+LebChannelPayload encodeChannel(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits,
+                                const InsideValues& inside, int threads) {
+  const ChannelPrediction prediction(order, dims, spec, pageBits, inside);
+  const int runs = static_cast<int>(prediction.runs());
+  std::vector<std::unique_ptr<Lead1Counter>> counters(static_cast<std::size_t>(runs));  // runs with a stored page
+  parallelFor(runs, threads, [&](int r) {
+    for (const auto& page : prediction.run(static_cast<std::uint64_t>(r)).pages) {
+      auto& counter = counters[static_cast<std::size_t>(r)];
+      if (!counter) counter = std::make_unique<Lead1Counter>(spec.valueBits);
+      counter->add(page);
+    }
+  });
+  Lead1Counter counter(spec.valueBits);
+  for (const auto& c : counters)
+    if (c) counter.merge(*c);
+  LebChannelPayload c{spec.kind, spec.components, spec.valueBits, spec.isSigned, counter.code(), {}, {}};
+  const Lead1Encoder encoder(c.code);
+  std::vector<RunDeltas> coded(static_cast<std::size_t>(runs));  // storedPage and, per page, nothing
+  std::vector<std::vector<std::string>> bytes(static_cast<std::size_t>(runs));
+  parallelFor(runs, threads, [&](int r) {
+    RunDeltas d = prediction.run(static_cast<std::uint64_t>(r));
+    for (const auto& page : d.pages) {
+      BitWriter w;
+      encoder.encodePage(page, w);
+      bytes[static_cast<std::size_t>(r)].push_back(w.finish());
+    }
+    coded[static_cast<std::size_t>(r)].storedPage = std::move(d.storedPage);
+  });
+  for (std::size_t r = 0; r < coded.size(); ++r) {
+    c.storedPage.insert(c.storedPage.end(), coded[r].storedPage.begin(), coded[r].storedPage.end());
+    for (std::string& page : bytes[r]) c.pages.push_back(std::move(page));
+  }
+  return c;
 }
 
-ChannelDeltas predictChannelOf(const HzOrder& order, const Volume<std::uint16_t>& volume, const ChannelSpec& spec,
-                               int pageBits) {
-  if (spec.kind == LebChannelKind::Data)
-    return predictChannel(order, volume.dims(), spec, pageBits,
-                          [&](std::size_t vi, int) { return static_cast<std::int32_t>(volume.data()[vi]); });
-  const std::vector<std::int8_t> grads = quantizedGradients(volume);
-  return predictChannel(order, volume.dims(), spec, pageBits, [&](std::size_t vi, int k) {
-    return static_cast<std::int32_t>(grads[3 * vi + static_cast<std::size_t>(k)]);
-  });
+// The inside values of a channel of `volume` (the gradients computed into `gradients`).
+InsideValues insideOf(const Volume<std::uint16_t>& volume, LebChannelKind kind, std::vector<std::int8_t>& gradients) {
+  if (kind == LebChannelKind::Data) return InsideValues{volume.data().data(), nullptr};
+  gradients = quantizedGradients(volume);
+  return InsideValues{nullptr, gradients.data()};
 }
 
 void checkPageBits(int pageBits) {
@@ -149,23 +181,9 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
   std::vector<LebChannelKind> kinds{LebChannelKind::Data};
   if (o.gradients) kinds.push_back(LebChannelKind::Gradients);
   for (LebChannelKind kind : kinds) {
-    const ChannelSpec spec = specOf(kind, sampleBits);
-    const ChannelDeltas d = predictChannelOf(order, volume, spec, o.pageBits);
-    const std::size_t pages = d.pageStart.size() - 1;
-    auto pageDeltas = [&](std::size_t p) {
-      return std::span<const std::int32_t>(d.deltas).subspan(d.pageStart[p], d.pageStart[p + 1] - d.pageStart[p]);
-    };
-    Lead1Counter counter(spec.valueBits);
-    for (std::size_t p = 0; p < pages; ++p) counter.add(pageDeltas(p));
-    LebChannelPayload c{kind,          spec.components, spec.valueBits,
-                        spec.isSigned, counter.code(),  std::vector<std::string>(pages)};
-    const Lead1Encoder encoder(c.code);
-    parallelFor(static_cast<int>(pages), o.threads, [&](int p) {
-      BitWriter w;
-      encoder.encodePage(pageDeltas(static_cast<std::size_t>(p)), w);
-      c.pages[static_cast<std::size_t>(p)] = w.finish();
-    });
-    channels.push_back(std::move(c));
+    std::vector<std::int8_t> gradients;
+    const InsideValues inside = insideOf(volume, kind, gradients);
+    channels.push_back(encodeChannel(order, volume.dims(), specOf(kind, sampleBits), o.pageBits, inside, o.threads));
   }
   return serializeLebStream(volume.dims(), sampleBits, grid, o.pageBits, channels);
 }
@@ -175,34 +193,36 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
   const LebGrid grid = lebGridCovering(dims);
   const auto samples =
       static_cast<std::uint64_t>(dims[0]) * static_cast<std::uint64_t>(dims[1]) * static_cast<std::uint64_t>(dims[2]);
-  const auto bricks = static_cast<std::uint64_t>((grid.pointsPerAxis() + 7) / 8);
   const auto points = static_cast<std::uint64_t>(grid.pointsPerAxis());
-  const std::uint64_t pages = (points * points * points + (std::uint64_t{1} << o.pageBits) - 1) >> o.pageBits;
+  const std::uint64_t perPage = std::uint64_t{1} << o.pageBits;
+  const std::uint64_t pages = (points * points * points + perPage - 1) >> o.pageBits;
+  const std::uint64_t stored = std::min(pages, samples);  // a stored page holds a point of the volume
+  const std::uint64_t shell = LebPadding::shellPoints(grid, dims) * LebPadding::kBytesPerPoint;
+  // In flight: one run's deltas per worker (4 bytes a value) and the runs' counters.
+  const std::uint64_t workers = static_cast<std::uint64_t>(workerCount(o.threads));
+  const std::uint64_t runs = (pages + kPagesPerRun - 1) / kPagesPerRun;
+  auto inFlight = [&](int components) {
+    return workers * std::min(samples, kPagesPerRun * perPage) * static_cast<std::uint64_t>(components) * 4 +
+           runs * 88 + std::min(runs, samples) * (17 * 17 * 8 + 64);
+  };
   // A coded value takes at most kMaxCodeLength + 17 magnitude and sign bits < 4 bytes
-  // (lead1_coder.h); each page adds a flush byte and its std::string.
-  auto coded = [&](int components) { return 4 * samples * static_cast<std::uint64_t>(components) + pages * 64; };
+  // (lead1_coder.h); each stored page adds a flush byte and its std::string.
+  auto coded = [&](int components) { return 4 * samples * static_cast<std::uint64_t>(components) + stored * 64; };
   std::uint64_t peak = 0, pagesSoFar = 0;
   for (const int components : o.gradients ? std::vector<int>{1, 3} : std::vector<int>{1}) {
-    const std::uint64_t gridBytes =
-        bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(components) * 2;  // GridValues
     const std::uint64_t gradients = components == 3 ? 3 * samples : 0;
-    peak = std::max(peak, gridBytes + 4 * samples * static_cast<std::uint64_t>(components) + gradients + pagesSoFar +
-                              coded(components));
+    peak = std::max(peak, shell + inFlight(components) + gradients + pagesSoFar + coded(components));
     pagesSoFar += coded(components);
   }
   return std::max(peak, 2 * pagesSoFar);  // serializing: the pages and the stream they make
 }
 
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
-  const auto samples = static_cast<std::uint64_t>(s.dims[0]) * static_cast<std::uint64_t>(s.dims[1]) *
-                       static_cast<std::uint64_t>(s.dims[2]);
-  const auto bricks = static_cast<std::uint64_t>((s.grid.pointsPerAxis() + 7) / 8);
-  std::uint64_t bytes = 2 * samples, grid = 0;
-  for (const LebChannel& c : s.channels) {
+  const std::uint64_t samples = sampleCount(s.dims);
+  std::uint64_t bytes = 2 * samples;
+  for (const LebChannel& c : s.channels)
     if (c.kind == LebChannelKind::Gradients) bytes += 3 * samples;
-    grid = std::max(grid, bricks * bricks * bricks * 512 * static_cast<std::uint64_t>(c.components) * 2);  // GridValues
-  }
-  return bytes + grid;
+  return bytes + LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint;  // one channel's shell at a time
 }
 
 LebDecoded decodeLeb(const LebStream& s, int threads) {
@@ -212,37 +232,58 @@ LebDecoded decodeLeb(const LebStream& s, int threads) {
   const int pb = s.pageBits;
   for (const LebChannel& ch : s.channels) {
     const ChannelSpec spec = specOf(ch);
-    if (ch.kind == LebChannelKind::Gradients) out.gradients.assign(3 * sampleCount(s.dims), 0);
-    GridValues g(s.grid, spec);
-    // Level by level: the points of one level depend only on coarser ones, so the parts of the
-    // level's pages are reconstructed in parallel; a page's reader carries on where the previous
-    // level left it, and is finished (its padding checked) once the walk has left the page.
+    const bool data = ch.kind == LebChannelKind::Data;
+    if (!data) out.gradients.assign(3 * sampleCount(s.dims), 0);
+    const InsideValues inside{data ? out.data.data().data() : nullptr, data ? nullptr : out.gradients.data()};
+    LebPadding padding(s.grid, s.dims, spec.components);
+    // Level by level: the points of one level depend only on coarser ones, so the level's part of
+    // each stored page is reconstructed in parallel; a page's reader carries on where the previous
+    // level left it, and is finished (its end checked) once the walk has left the page. Between
+    // stored pages, the walk checks that no point of the volume lies in a page the stream lacks.
     std::map<std::uint64_t, Lead1PageReader> open;
     for (int level = -1; level < s.grid.levelCount(); ++level) {
+      padding.addLevel(level, inside);
       const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
       if (begin == end) continue;
-      const std::uint64_t first = begin >> pb, last = (end - 1) >> pb;
-      for (std::uint64_t p = first; p <= last; ++p)
-        if (!open.count(p)) open.emplace(p, openPage(s, ch, p));
-      parallelFor(static_cast<int>(last - first + 1), threads, [&](int i) {
-        const std::uint64_t page = first + static_cast<std::uint64_t>(i);
-        Lead1PageReader& reader = open.at(page);
-        walkPredictions(order, s.dims, g, std::max(begin, page << pb), std::min(end, (page + 1) << pb),
-                        [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
-                          const std::int32_t v = reconstructSample(pred, reader.next(), spec.valueBits, spec.isSigned);
-                          if (ch.kind == LebChannelKind::Data)
-                            out.data.data()[vi] = static_cast<std::uint16_t>(v);
-                          else
-                            out.gradients[3 * vi + static_cast<std::size_t>(k)] = static_cast<std::int8_t>(v);
-                          return v;
-                        });
+      // Segments of the level: a stored page's part of it, or a run of pages the stream lacks.
+      struct Segment {
+        std::uint64_t begin, end;
+        Lead1PageReader* reader;
+      };
+      std::vector<Segment> segments;
+      auto stored = std::lower_bound(ch.storedPage.begin(), ch.storedPage.end(), begin >> pb);
+      for (std::uint64_t at = begin; at < end;) {
+        if (stored != ch.storedPage.end() && (std::uint64_t{*stored} << pb) < end) {
+          const std::uint64_t page = *stored, pageBegin = std::max(begin, page << pb);
+          if (at < pageBegin) segments.push_back({at, pageBegin, nullptr});
+          auto it = open.find(page);
+          if (it == open.end()) it = open.emplace(page, openPage(s, ch, page)).first;
+          at = std::min(end, (page + 1) << pb);
+          segments.push_back({pageBegin, at, &it->second});
+          ++stored;
+        } else {
+          segments.push_back({at, end, nullptr});
+          at = end;
+        }
+      }
+      parallelFor(static_cast<int>(segments.size()), threads, [&](int i) {
+        const Segment& seg = segments[static_cast<std::size_t>(i)];
+        walkInside(order, s.dims, padding, inside, spec.components, seg.begin, seg.end,
+                   [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
+                     if (!seg.reader) openPage(s, ch, h >> pb);  // throws: the page holds a point, but is not stored
+                     const std::int32_t v = reconstructSample(pred, seg.reader->next(), spec.valueBits, spec.isSigned);
+                     if (data)
+                       out.data.data()[vi] = static_cast<std::uint16_t>(v);
+                     else
+                       out.gradients[3 * vi + static_cast<std::size_t>(k)] = static_cast<std::int8_t>(v);
+                   });
       });
-      const bool lastLevel = level + 1 == s.grid.levelCount();
-      for (auto it = open.begin(); it != open.end() && (it->first < last || lastLevel);) {
-        it->second.finish();
+      for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
+        finishPage(it->second, it->second.valuesRead() / static_cast<std::size_t>(spec.components), ch, it->first);
         it = open.erase(it);
       }
     }
+    if (!open.empty()) throw std::logic_error("LEB decode: a page outlived the grid");
   }
   return out;
 }
@@ -250,7 +291,13 @@ LebDecoded decodeLeb(const LebStream& s, int threads) {
 std::vector<std::int32_t> lebDeltas(const Volume<std::uint16_t>& volume, int sampleBits, LebChannelKind kind) {
   checkSamples(volume, sampleBits);
   const HzOrder order(lebGridCovering(volume.dims()));
-  return predictChannelOf(order, volume, specOf(kind, sampleBits), kMaxLebPageBits).deltas;
+  std::vector<std::int8_t> gradients;
+  const ChannelPrediction prediction(order, volume.dims(), specOf(kind, sampleBits), kMaxLebPageBits,
+                                     insideOf(volume, kind, gradients));
+  std::vector<std::int32_t> deltas;
+  for (std::uint64_t r = 0; r < prediction.runs(); ++r)
+    for (const auto& page : prediction.run(r).pages) deltas.insert(deltas.end(), page.begin(), page.end());
+  return deltas;
 }
 
 double LebStats::ratio() const {
@@ -276,6 +323,7 @@ LebStats lebStats(const LebStream& s) {
   st.gridPoints = s.grid.pointCount();
   st.volumePoints = sampleCount(s.dims);
   st.pages = s.pageCount();
+  st.storedPages = s.channels.empty() ? 0 : s.channels.front().storedPage.size();
   st.headerBytes = kLebHeaderBytes;
   st.streamBytes = s.bytes.size();
   for (const LebChannel& c : s.channels) {

@@ -2,11 +2,12 @@
 // encoder, the whole-volume decoder and the stream statistics. Random access is leb_reader.h.
 //
 // Encoding: a volume of X x Y x Z samples (8 or 16 bits) lies in the smallest (2^k + 1)^3 grid
-// that covers it, origin at sample (0, 0, 0). Walking the grid in hierarchical z-order
-// (hz_order.h), every point is predicted from its split edge (prediction.h) and the delta of each
-// point inside the volume is coded; points of the padding are not coded (they take their
-// prediction). Deltas are cut into pages of 2^pageBits indices, each coded on its own with the
-// lead-1 code built from the counts of all pages (lead1_coder.h). The gradients channel
+// that covers it, origin at sample (0, 0, 0). Walking the points inside the volume in
+// hierarchical z-order (hz_order.h), every point is predicted from its split edge (prediction.h)
+// and its delta is coded; points of the padding are not coded (they take their prediction, and
+// only the shell that predictions reach is computed: leb_padding.h). Deltas are cut into pages of
+// 2^pageBits indices, each coded on its own with the lead-1 code built from the counts of all
+// pages (lead1_coder.h); only pages that hold a point of the volume are stored. The gradients channel
 // (gradients.h) is predicted and coded the same way, its three components interleaved per point,
 // with a code of its own (so Table 1 can report data and gradients separately).
 //
@@ -32,12 +33,12 @@ struct LebEncodeOptions {
 // Throws std::invalid_argument for sampleBits other than 8 or 16, a sample >= 2^sampleBits, page
 // bits outside [kMinLebPageBits, kMaxLebPageBits] or a volume larger than the largest grid.
 //
-// Memory: at most lebEncodeMemoryBytes(dims, options) beside the volume itself: the grid's values
-// of one channel at a time, (2^k + 1)^3 x components x 2 bytes (rounded up to 8^3 bricks), that
-// channel's deltas (4 bytes per coded value), the gradients (3 bytes per sample), the coded pages
-// and the stream. The grid covers the volume, so a thin volume pays for the whole cube (1025x1x1
-// samples need a 1025^3 grid, 2.2 GB for the data channel): a caller compares the bound with what
-// it may allocate before reading the volume (voxref encode does).
+// Memory: at most lebEncodeMemoryBytes(dims, options) beside the volume itself: the gradients (3
+// bytes per sample), the shell of padding that predictions reach (leb_padding.h), one run of 64
+// pages of deltas per thread (the encoder makes two passes: the counts for the code, then the
+// deltas again, each page coded as it is predicted), the coded pages and the stream. Nothing is
+// proportional to the grid: pages of padding alone are neither walked nor stored, so a 1025x1x1
+// volume costs what its samples cost (FORMAT.md, "Stored pages").
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& options = {});
 // The bound above, from the extents alone (nothing is allocated). Throws std::invalid_argument as
 // encodeLeb does for extents larger than the largest grid.
@@ -50,12 +51,11 @@ struct LebDecoded {
 // Decodes every page (checking its CRC-32 and its code) and reconstructs the volume. Throws
 // StreamError naming the page and offset of the first corrupt page.
 // Memory: at most lebDecodeMemoryBytes(stream), plus one small reader per open page: the volume
-// (2 bytes per sample) and its gradients (3 bytes per sample), plus the grid's values of one
-// channel at a time, (2^k + 1)^3 x components x 2 bytes (rounded up to 8^3 bricks): 35 MB for a
-// 257^3 data channel, 2.2 GB for 1025^3. The grid is the smallest cube that covers the volume, so
-// a thin volume pays for the whole cube (a 3 KB stream of 513x1x1 samples needs 1.1 GB): a caller
-// that decodes untrusted streams compares lebDecodeMemoryBytes with what it may allocate first
-// (voxref decode does). parseLebStream has already refused streams too short for their volume.
+// (2 bytes per sample) and its gradients (3 bytes per sample), plus the shell of padding that
+// predictions reach, one channel at a time (leb_padding.h; none for a volume that fills its grid).
+// Nothing is proportional to the grid: a 513x1x1 stream decodes in a few kilobytes. A caller that
+// decodes untrusted streams compares lebDecodeMemoryBytes with what it may allocate first (voxref
+// decode does). parseLebStream has already refused streams too short for their volume.
 LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
 // The bound above, from the header alone (nothing is allocated).
 std::uint64_t lebDecodeMemoryBytes(const LebStream& stream);
@@ -75,8 +75,8 @@ struct LebChannelStats {
 struct LebStats {
   Dims3 dims{0, 0, 0};
   int sampleBits = 8, k = 0, pageBits = 0;
-  std::uint64_t gridPoints = 0, volumePoints = 0;  // padding = gridPoints - volumePoints
-  std::uint64_t pages = 0, headerBytes = 0, streamBytes = 0;
+  std::uint64_t gridPoints = 0, volumePoints = 0;                              // padding = gridPoints - volumePoints
+  std::uint64_t pages = 0, storedPages = 0, headerBytes = 0, streamBytes = 0;  // the grid's pages; those stored
   std::vector<LebChannelStats> channels;
   // Raw bytes over stream bytes; the header is counted with the data channel. The padding is
   // not in the raw bytes (it costs no payload; its page table entries are counted).

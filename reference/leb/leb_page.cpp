@@ -16,18 +16,32 @@ std::string pageName(const LebChannel& c, std::uint64_t page) {
 }  // namespace
 
 std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page) {
-  const std::uint64_t begin = page << pageBits, end = std::min(order.size(), (page + 1) << pageBits);
   std::uint64_t n = 0;
-  for (HzCursor c(order, begin); c.index() < end; c.next()) n += insideVolume(c.point(), dims);
+  order.forEachInside(dims, page << pageBits, (page + 1) << pageBits,
+                      [&](std::uint64_t, const GridPoint&, int, int, unsigned) { ++n; });
   return n;
 }
 
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
-  const std::string_view bytes = s.page(c, page);
-  const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[page]);
-  if (!crc32Matches(bytes, c.pageCrc[page]))
+  const std::ptrdiff_t slot = c.slotOf(page);
+  if (slot < 0)
+    throw StreamError(c.descriptorOffset, pageName(c, page) +
+                                              " holds points of the volume, but the stream does not store it (the "
+                                              "page table lacks it)");
+  const auto j = static_cast<std::size_t>(slot);
+  const std::string_view bytes = s.page(c, j);
+  const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[j]);
+  if (!crc32Matches(bytes, c.pageCrc[j]))
     throw StreamError(offset, pageName(c, page) + ": CRC-32 mismatch (the page is corrupt)");
   return Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page));
+}
+
+void finishPage(const Lead1PageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page) {
+  if (points == 0)
+    throw StreamError(c.descriptorOffset, pageName(c, page) +
+                                              " is stored, but it holds no point of the volume (a stream stores "
+                                              "exactly the pages that do)");
+  reader.finish();
 }
 
 std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
@@ -35,12 +49,15 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
   Lead1PageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
   std::vector<std::int16_t> out((std::size_t{1} << s.pageBits) * comps, 0);
-  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
-  for (HzCursor cur(order, begin); cur.index() < end; cur.next())
-    if (insideVolume(cur.point(), s.dims))
-      for (std::size_t k = 0; k < comps; ++k)
-        out[static_cast<std::size_t>(cur.index() - begin) * comps + k] = static_cast<std::int16_t>(reader.next());
-  reader.finish();
+  const std::uint64_t begin = page << s.pageBits;
+  std::uint64_t points = 0;
+  order.forEachInside(
+      s.dims, begin, (page + 1) << s.pageBits, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
+        ++points;
+        for (std::size_t k = 0; k < comps; ++k)
+          out[static_cast<std::size_t>(h - begin) * comps + k] = static_cast<std::int16_t>(reader.next());
+      });
+  finishPage(reader, points, c, page);
   return out;
 }
 

@@ -8,11 +8,10 @@
 #include <vector>
 
 #include "reference/leb/hz_order.h"
+#include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_stream.h"
 
 namespace voxref::ref {
-
-inline bool insideVolume(const GridPoint& p, const Dims3& d) { return p[0] < d[0] && p[1] < d[1] && p[2] < d[2]; }
 
 // How many of the page's points lie inside the volume (a walk over the page's indices).
 std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page);
@@ -20,6 +19,10 @@ std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pa
 // Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
 // a reader of its deltas; the page holds one delta per component of each point inside the volume.
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
+
+// The end of a page read whole: StreamError unless the page held `points` > 0 points of the
+// volume (a stream stores no page without one) and nothing but the last byte's zero bits is left.
+void finishPage(const Lead1PageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page);
 
 // The page's deltas (each fits an int16) placed at their positions: 2^pageBits x components entries, 0 for the padding
 // and for indices past the grid's last point. Throws StreamError for a corrupt page.

@@ -1,5 +1,6 @@
 #include "reference/leb/leb_stream.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "reference/common/byte_stream.h"
@@ -21,8 +22,13 @@ std::string dimsText(const Dims3& d) {
 
 std::uint64_t LebStream::pageCount() const { return pagesFor(grid, pageBits); }
 
-std::string_view LebStream::page(const LebChannel& c, std::uint64_t index) const {
-  const std::uint64_t begin = c.pageOffset[index], end = c.pageOffset[index + 1];
+std::ptrdiff_t LebChannel::slotOf(std::uint64_t page) const {
+  const auto it = std::lower_bound(storedPage.begin(), storedPage.end(), page);
+  return it != storedPage.end() && *it == page ? it - storedPage.begin() : -1;
+}
+
+std::string_view LebStream::page(const LebChannel& c, std::size_t slot) const {
+  const std::uint64_t begin = c.pageOffset[slot], end = c.pageOffset[slot + 1];
   return std::string_view(bytes).substr(c.payloadOffset + begin, end - begin);
 }
 
@@ -37,7 +43,7 @@ std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid&
   // FORMAT.md section 1: the header; the total size is patched in at the end.
   ByteWriter w;
   w.bytes("VXLB", 4);
-  w.le<std::uint16_t>(1);
+  w.le<std::uint16_t>(kLebVersion);
   w.le<std::uint8_t>(static_cast<std::uint8_t>(sampleBits));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(grid.k));
   for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(dims[a]));
@@ -49,17 +55,21 @@ std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid&
   const std::uint64_t pages = pagesFor(grid, pageBits);
   // Section 2: per channel, a descriptor and the pages.
   for (const LebChannelPayload& c : channels) {
-    if (c.pages.size() != pages) throw std::invalid_argument("a channel needs " + std::to_string(pages) + " pages");
+    if (c.pages.size() != c.storedPage.size() || c.pages.empty() ||
+        !std::is_sorted(c.storedPage.begin(), c.storedPage.end(), std::less_equal<>()) || c.storedPage.back() >= pages)
+      throw std::invalid_argument("a channel stores one page per ascending page index below " + std::to_string(pages));
     const std::size_t start = w.size();
     w.le<std::uint8_t>(static_cast<std::uint8_t>(c.kind));
     w.le<std::uint8_t>(static_cast<std::uint8_t>(c.components));
     w.le<std::uint8_t>(static_cast<std::uint8_t>(c.valueBits));
     w.le<std::uint8_t>(c.isSigned ? 1 : 0);
     w.le<std::uint32_t>(static_cast<std::uint32_t>(pages));
+    w.le<std::uint32_t>(static_cast<std::uint32_t>(c.storedPage.size()));
     std::uint64_t payload = 0;
     for (const std::string& p : c.pages) payload += p.size();
     w.le<std::uint64_t>(payload);
     w.bytes(c.code.lengths.data(), c.code.lengths.size());
+    for (const std::uint32_t p : c.storedPage) w.le<std::uint32_t>(p);
     for (const std::string& p : c.pages) w.le<std::uint32_t>(static_cast<std::uint32_t>(p.size()));
     for (const std::string& p : c.pages) w.le<std::uint32_t>(crc32(p));
     w.le<std::uint32_t>(crc32(std::string_view(w.str()).substr(start)));
@@ -83,7 +93,11 @@ LebStream parseLebStream(std::string bytes) {
   r.need(kLebHeaderBytes - 4, "header");
   if (!crc32Matches(b.substr(0, 32), static_cast<std::uint32_t>(loadLe(b.data() + 32, 4))))
     r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
-  r.le<std::uint16_t>("version", 1, 1);
+  if (const std::size_t at = r.offset(); r.le<std::uint16_t>("version") != kLebVersion)
+    r.fail(at, "version: expected " + std::to_string(kLebVersion) + ", got " +
+                   std::to_string(loadLe(b.data() + at, 2)) +
+                   " (version 1 streams, with a page table entry for every page of the padding, are no longer "
+                   "read: encode the volume again)");
   const std::size_t bitsAt = r.offset();
   s.sampleBits = r.le<std::uint8_t>("sample_bits");
   if (s.sampleBits != 8 && s.sampleBits != 16)
@@ -119,6 +133,7 @@ LebStream parseLebStream(std::string bytes) {
                                      data ? static_cast<std::uint64_t>(s.sampleBits) : 8);
     c.isSigned = r.le<std::uint8_t>("signed", data ? 0 : 1, data ? 0 : 1) != 0;
     r.le<std::uint32_t>("page_count", pages, pages);
+    const std::uint64_t stored = r.le<std::uint32_t>("stored_pages", 1, pages);
     const std::size_t payloadAt = r.offset();
     const std::uint64_t payload = r.le<std::uint64_t>("payload_bytes");
     const std::size_t tableAt = r.offset();
@@ -129,14 +144,24 @@ LebStream parseLebStream(std::string bytes) {
     if (const std::string p = lead1CodeProblem(c.code); !p.empty()) r.fail(tableAt, "code lengths: " + p);
     c.decoder = std::make_shared<const Lead1Decoder>(c.code);
     // The page table: its size is checked against the stream before it is read.
-    r.need(static_cast<std::size_t>(pages) * 8 + 4, "page table");
+    r.need(static_cast<std::size_t>(stored) * 12 + 4, "page table");
+    const std::size_t indicesAt = r.offset();
+    c.storedPage.resize(static_cast<std::size_t>(stored));
+    for (std::uint64_t j = 0; j < stored; ++j) {
+      c.storedPage[j] = r.le<std::uint32_t>("stored page");
+      if (c.storedPage[j] >= pages || (j > 0 && c.storedPage[j] <= c.storedPage[j - 1]))
+        r.fail(indicesAt + 4 * j,
+               "stored page: " + std::to_string(c.storedPage[j]) +
+                   (c.storedPage[j] >= pages ? " is not a page of the grid's " + std::to_string(pages)
+                                             : " does not follow page " + std::to_string(c.storedPage[j - 1])));
+    }
     const std::size_t lengthsAt = r.offset();
-    c.pageOffset.assign(static_cast<std::size_t>(pages) + 1, 0);
-    for (std::uint64_t i = 0; i < pages; ++i) {
+    c.pageOffset.assign(static_cast<std::size_t>(stored) + 1, 0);
+    for (std::uint64_t i = 0; i < stored; ++i) {
       const std::uint64_t len = r.le<std::uint32_t>("page length");
       c.pageOffset[i + 1] = c.pageOffset[i] + len;
       if (c.pageOffset[i + 1] > payload)
-        r.fail(lengthsAt + 4 * i, "page length: page " + std::to_string(i) + " ends at byte " +
+        r.fail(lengthsAt + 4 * i, "page length: page " + std::to_string(c.storedPage[i]) + " ends at byte " +
                                       std::to_string(c.pageOffset[i + 1]) + " of the payload, past its end (" +
                                       std::to_string(payload) + " bytes)");
     }
@@ -151,8 +176,8 @@ LebStream parseLebStream(std::string bytes) {
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " +
                             std::to_string(deltas) + " deltas of a " + dimsText(s.dims) +
                             " volume (at least one bit each)");
-    c.pageCrc.resize(static_cast<std::size_t>(pages));
-    for (std::uint64_t i = 0; i < pages; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
+    c.pageCrc.resize(static_cast<std::size_t>(stored));
+    for (std::uint64_t i = 0; i < stored; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
     const std::size_t crcAt = r.offset();
     if (!crc32Matches(b.substr(c.descriptorOffset, crcAt - c.descriptorOffset), r.le<std::uint32_t>("descriptor crc")))
       r.fail(crcAt, "descriptor crc: CRC-32 mismatch (channel " + std::to_string(ci) + "'s descriptor is corrupt)");

@@ -5,9 +5,9 @@
 // CRC-32s, the code tables (prefix-free, lengths within the limit) and that the page table fits
 // the stream, before it keeps anything; the page payloads are checked (CRC-32, then the lead-1
 // decoder) when a page is decoded. Errors are StreamError (byte_stream.h) naming the offset and
-// the field. Memory: the parsed stream keeps the bytes, plus 12 bytes per page and channel (the
-// page table, whose 8 bytes per page are checked to lie in the stream before it is allocated:
-// at most 1.5 times the stream's size) and the code's decoding tables (a few KiB). Claimed sizes
+// the field. Memory: the parsed stream keeps the bytes, plus 16 bytes per stored page and channel
+// (the page table, whose 12 bytes per stored page are checked to lie in the stream before it is
+// allocated: at most 1.4 times the stream's size) and the code's decoding tables (a few KiB). Claimed sizes
 // (total_bytes, payload_bytes, a page table of 2^40 bytes) are checked against the stream's length
 // before anything is allocated for them; what decoding the volume costs is lebDecodeMemoryBytes
 // (leb_codec.h).
@@ -35,10 +35,16 @@ struct LebChannel {
   Lead1Code code;
   std::shared_ptr<const Lead1Decoder> decoder;  // built from `code` by parseLebStream
   std::size_t descriptorOffset = 0, descriptorBytes = 0;
-  std::size_t payloadOffset = 0;          // of the first page, in the stream
-  std::vector<std::uint64_t> pageOffset;  // page i is [pageOffset[i], pageOffset[i + 1]) after payloadOffset
+  std::size_t payloadOffset = 0;  // of the first page, in the stream
+  // The stored pages (those holding a point of the volume; FORMAT.md, version 2), ascending: the
+  // j-th stored page is page storedPage[j], its bytes [pageOffset[j], pageOffset[j + 1]) after
+  // payloadOffset, its CRC-32 pageCrc[j].
+  std::vector<std::uint32_t> storedPage;
+  std::vector<std::uint64_t> pageOffset;
   std::vector<std::uint32_t> pageCrc;
   std::uint64_t payloadBytes() const { return pageOffset.empty() ? 0 : pageOffset.back(); }
+  // The slot j of page `page` among the stored pages, or -1 when the stream does not store it.
+  std::ptrdiff_t slotOf(std::uint64_t page) const;
 };
 
 struct LebStream {
@@ -49,12 +55,14 @@ struct LebStream {
   int pageBits = 12;  // a page holds 2^pageBits consecutive hierarchical indices
   std::vector<LebChannel> channels;
 
-  std::uint64_t pageCount() const;
-  std::string_view page(const LebChannel& c, std::uint64_t index) const;
+  std::uint64_t pageCount() const;  // all pages of the grid, stored or not
+  // The bytes of stored page slot j (LebChannel::slotOf).
+  std::string_view page(const LebChannel& c, std::size_t slot) const;
   const LebChannel* channel(LebChannelKind kind) const;
 };
 
 inline constexpr std::size_t kLebHeaderBytes = 36;
+inline constexpr int kLebVersion = 2;
 inline constexpr int kMinLebPageBits = 4, kMaxLebPageBits = 20;
 
 // The pieces the encoder hands over; serializeLebStream lays them out (and computes every CRC).
@@ -63,7 +71,8 @@ struct LebChannelPayload {
   int components, valueBits;
   bool isSigned;
   Lead1Code code;
-  std::vector<std::string> pages;
+  std::vector<std::uint32_t> storedPage;  // ascending: the pages that hold a point of the volume
+  std::vector<std::string> pages;         // one per stored page
 };
 std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits,
                                const std::vector<LebChannelPayload>& channels);

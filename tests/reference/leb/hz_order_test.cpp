@@ -99,3 +99,39 @@ TEST(Morton, RoundTripsAndInterleavesFromTheLowestBit) {
 
 }  // namespace
 }  // namespace voxref::ref
+
+namespace voxref::ref {
+namespace {
+
+// forEachInside visits exactly the points of the full walk (HzCursor) that lie inside the box and
+// the range, in the same order, with the same classes.
+TEST(HzOrder, ForEachInsideIsTheWalkFilteredByTheBox) {
+  std::mt19937 rng(12);
+  for (int k : {0, 1, 3, 5}) {
+    const LebGrid g = makeLebGrid(k);
+    const HzOrder order(g);
+    for (int trial = 0; trial < 12; ++trial) {
+      std::array<int, 3> dims;
+      for (int a = 0; a < 3; ++a) dims[a] = 1 + static_cast<int>(rng() % static_cast<unsigned>(g.pointsPerAxis()));
+      const std::uint64_t begin = rng() % order.size(), end = begin + rng() % (order.size() - begin + 1);
+      std::vector<std::uint64_t> walked, visited;
+      for (HzCursor c(order, begin); c.index() < end; c.next())
+        if (c.point()[0] < dims[0] && c.point()[1] < dims[1] && c.point()[2] < dims[2]) walked.push_back(c.index());
+      order.forEachInside(dims, begin, end, [&](std::uint64_t h, const GridPoint& p, int level, int s, unsigned odd) {
+        visited.push_back(h);
+        ASSERT_EQ(order.point(h), p);
+        const LebPointClass pc = classifyPoint(g, p);
+        ASSERT_EQ(level, pc.level);
+        if (level >= 0) {
+          ASSERT_EQ(s, pc.scaleLog2);
+          ASSERT_EQ(odd, pc.oddAxes);
+        }
+      });
+      EXPECT_EQ(visited, walked) << "k " << k << ", box " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", ["
+                                 << begin << ", " << end << ")";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace voxref::ref

@@ -1,5 +1,6 @@
 #include "reference/leb/leb_codec.h"
 
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -7,6 +8,8 @@
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
 #include "reference/leb/gradients.h"
+#include "reference/leb/leb_padding.h"
+#include "reference/leb/leb_page.h"
 #include "reference/leb/leb_reader.h"
 
 namespace voxref::ref {
@@ -178,8 +181,9 @@ class LebCorrupt : public ::testing::Test {
     }
     return "";
   }
-  std::size_t tableAt(const LebChannel& c) const { return c.descriptorOffset + 16; }
-  std::size_t pageLengthsAt(const LebChannel& c) const { return tableAt(c) + c.code.lengths.size(); }
+  std::size_t tableAt(const LebChannel& c) const { return c.descriptorOffset + 20; }
+  std::size_t pageIndicesAt(const LebChannel& c) const { return tableAt(c) + c.code.lengths.size(); }
+  std::size_t pageLengthsAt(const LebChannel& c) const { return pageIndicesAt(c) + 4 * c.storedPage.size(); }
 
   std::string bytes;
   LebStream layout;
@@ -224,13 +228,14 @@ TEST_F(LebCorrupt, HugeClaimedSizesAreRefusedBeforeAllocating) {
   put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
   EXPECT_EQ(errorOf(b), "offset 24: total_bytes: the header describes 1099511627776 bytes, the stream has " +
                             std::to_string(b.size()) + " (truncated)");
-  // payload_bytes of 2^40 in the data channel's descriptor (offset 36 + 8).
+  // payload_bytes of 2^40 in the data channel's descriptor (offset 36 + 12).
   b = bytes;
-  put64(b, 44, terabyte);
-  EXPECT_EQ(errorOf(b), "offset 44: payload_bytes: 1099511627776, but the pages add up to " +
+  put64(b, 48, terabyte);
+  EXPECT_EQ(errorOf(b), "offset 48: payload_bytes: 1099511627776, but the pages add up to " +
                             std::to_string(layout.channels[0].payloadBytes()));
-  // The largest grid, 1025^3, in pages of 2^4: 67305665 pages, a page table of 8 bytes each (and
-  // the descriptor CRC) that the stream cannot hold; the table starts after the 9 x 9 code lengths.
+  // The largest grid, 1025^3, in pages of 2^4: 67305665 pages, all claimed stored: a page table of
+  // 12 bytes each (and the descriptor CRC) that the stream cannot hold; the table starts after the
+  // 9 x 9 code lengths, at 36 + 20 + 81.
   b = bytes;
   b[7] = 10;
   put32(b, 8, 1025);
@@ -239,39 +244,98 @@ TEST_F(LebCorrupt, HugeClaimedSizesAreRefusedBeforeAllocating) {
   b[20] = 4;
   put32(b, 32, crc32(std::string_view(b).substr(0, 32)));
   put32(b, 40, 67305665);
-  EXPECT_EQ(errorOf(b), "offset 133: page table: expected 538445324 bytes, the stream ends after " +
-                            std::to_string(b.size() - 133));
+  put32(b, 44, 67305665);
+  EXPECT_EQ(errorOf(b), "offset 137: page table: expected 807667984 bytes, the stream ends after " +
+                            std::to_string(b.size() - 137));
+  // More stored pages than the grid has.
+  b = bytes;
+  put32(b, 44, static_cast<std::uint32_t>(layout.pageCount() + 1));
+  EXPECT_NE(errorOf(b).find("offset 44: stored_pages: expected 1.." + std::to_string(layout.pageCount())),
+            std::string::npos)
+      << errorOf(b);
 }
 
-// The contract of leb_codec.h: what decodeLeb allocates is known from the header. A thin volume
-// pays for the cube that covers it: 65x1x1 samples in a stream of a few KB need the 65^3 grid
-// (9^3 bricks of 8^3 points), 2.2 MB for the 3 gradient components.
-TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheGrid) {
+// The page table lists exactly the pages that hold a point of the volume, ascending: a stream
+// that lacks one, stores one of padding alone, or lists them out of order is refused, naming it.
+TEST_F(LebCorrupt, ThePageTableListsExactlyThePagesOfTheVolume) {
+  const LebChannel& c = layout.channels[0];
+  ASSERT_GE(c.storedPage.size(), 3u);
+  std::string b = bytes;
+  put32(b, pageIndicesAt(c) + 4, c.storedPage[0]);  // the second entry repeats the first
+  fixCrcs(b);
+  EXPECT_NE(errorOf(b).find("stored page: " + std::to_string(c.storedPage[0]) + " does not follow page " +
+                            std::to_string(c.storedPage[0])),
+            std::string::npos)
+      << errorOf(b);
+  b = bytes;
+  put32(b, pageIndicesAt(c) + 4 * (c.storedPage.size() - 1), static_cast<std::uint32_t>(layout.pageCount()));
+  fixCrcs(b);
+  EXPECT_NE(errorOf(b).find("is not a page of the grid's " + std::to_string(layout.pageCount())), std::string::npos)
+      << errorOf(b);
+  // The last stored page renamed to one past it that holds only padding (if there is one), or a
+  // stored page renamed to a gap: either way a page of the volume goes missing.
+  const HzOrder order(layout.grid);
+  std::uint32_t padding = 0;
+  for (std::uint32_t p = c.storedPage.back() + 1; p < layout.pageCount() && !padding; ++p)
+    if (insidePointsOfPage(order, layout.dims, layout.pageBits, p) == 0) padding = p;
+  ASSERT_NE(padding, 0u);
+  b = bytes;
+  put32(b, pageIndicesAt(c) + 4 * (c.storedPage.size() - 1), padding);
+  fixCrcs(b);
+  EXPECT_NE(errorOf(b).find("data page " + std::to_string(c.storedPage.back()) +
+                            " holds points of the volume, but the stream does not store it"),
+            std::string::npos)
+      << errorOf(b);
+}
+
+// The contract of leb_codec.h: what decodeLeb allocates is known from the header, and follows the
+// volume, not the grid: the samples (2 bytes), the gradients (3) and the shell of padding that
+// predictions reach (leb_padding.h), whose size leb_padding_test.cpp derives by brute force.
+TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheVolume) {
   const LebStream thin = parseLebStream(encodeLeb(noise({65, 1, 1}, 8, 3), 8));
-  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + 9u * 9 * 9 * 512 * 3 * 2);
-  EXPECT_GT(lebDecodeMemoryBytes(thin), 100 * thin.bytes.size());
+  const std::uint64_t shell = LebPadding::shellPoints(thin.grid, thin.dims);
+  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + shell * LebPadding::kBytesPerPoint);
+  EXPECT_LT(shell, 65u * 8);  // of the 65^3 grid's 274560 padding points
   LebEncodeOptions o;
   o.gradients = false;
   const LebStream cube = parseLebStream(encodeLeb(noise({9, 9, 9}, 16, 4), 16, o));
-  EXPECT_EQ(lebDecodeMemoryBytes(cube), 2u * 729 + 2u * 2 * 2 * 512 * 1 * 2);
-  const LebDecoded d = decodeLeb(thin);  // and the bound is what the decoder works within
+  EXPECT_EQ(lebDecodeMemoryBytes(cube), 2u * 729);  // an unpadded grid: no shell
+  const LebDecoded d = decodeLeb(thin);
   EXPECT_EQ(d.data.data().size(), 65u);
 }
 
-// The encoder's bound, from the extents alone: the covering grid of the largest channel (data: 1
-// component, gradients: 3, in 8^3 bricks of 2-byte values) dominates for a thin volume, whatever
-// its few samples; the coded values and pages add at most 4 bytes per value and 64 per page.
-TEST(LebEncodeMemory, TheBoundFollowsTheCoveringGridOfTheLargestChannel) {
+// The encoder's bound, from the extents alone: the deltas (4 bytes a value), the coded pages, the
+// gradients and the shell; a thin volume costs what its samples cost, not its 1025^3 grid.
+TEST(LebEncodeMemory, TheBoundFollowsTheVolume) {
   LebEncodeOptions dataOnly;
   dataOnly.gradients = false;
-  const std::uint64_t grid1025 = 129ull * 129 * 129 * 512 * 2;  // (1025 + 7) / 8 = 129 bricks per axis
-  const std::uint64_t pages1025 = (1025ull * 1025 * 1025 + 4095) / 4096;
-  EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025);
-  EXPECT_LE(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), grid1025 + 8 * 1025 + 2 * 64 * pages1025);
-  EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}), 3 * grid1025 + 3 * 1025);  // the gradients' grid and the gradients
-  EXPECT_LT(lebEncodeMemoryBytes({9, 9, 9}), std::uint64_t{1} << 20);      // a 9^3 grid: two bricks per axis
+  // A few MiB (the code's counters of the runs that hold samples): the 1025^3 grid took 2.2 GB.
+  EXPECT_LT(lebEncodeMemoryBytes({1025, 1, 1}, dataOnly), std::uint64_t{4} << 20);
+  EXPECT_LT(lebEncodeMemoryBytes({1025, 1, 1}), std::uint64_t{4} << 20);
+  EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}), 16u * 1025 + 3 * 1025);  // deltas of both channels, gradients
+  EXPECT_GE(lebEncodeMemoryBytes({256, 256, 128}, dataOnly), 8ull * 256 * 256 * 128);  // deltas, then the stream
   EXPECT_THROW(lebEncodeMemoryBytes({9, 9, 9}, LebEncodeOptions{30, true, 0}), std::invalid_argument);  // page bits
   EXPECT_THROW(lebEncodeMemoryBytes({0, 9, 9}), std::invalid_argument);
+}
+
+// Padding for free: a 1025x1x1 volume in its 1025^3 grid stores exactly the pages its samples'
+// indices fall in (HzOrder::index of each sample, the closed form, not the walk), and its stream
+// is of the order of its data.
+TEST(LebCodec, ThinVolumesStoreOnlyThePagesOfTheirSamples) {
+  const Volume<std::uint16_t> v = smooth({1025, 1, 1}, 8);
+  LebEncodeOptions o;
+  o.gradients = false;
+  const LebStream s = parseLebStream(encodeLeb(v, 8, o));
+  const HzOrder order(s.grid);
+  std::vector<std::uint32_t> expected;
+  for (int x = 0; x < 1025; ++x) expected.push_back(static_cast<std::uint32_t>(order.index({x, 0, 0}) >> s.pageBits));
+  std::sort(expected.begin(), expected.end());
+  expected.erase(std::unique(expected.begin(), expected.end()), expected.end());
+  EXPECT_EQ(s.channels[0].storedPage, expected);
+  EXPECT_EQ(lebStats(s).storedPages, expected.size());
+  EXPECT_EQ(lebStats(s).pages, (1025ull * 1025 * 1025 + 4095) / 4096);
+  EXPECT_LT(s.bytes.size(), 16u * 1025);  // 1025 bytes of data; 12 bytes of table per stored page
+  EXPECT_EQ(decodeLeb(s).data.data(), v.data());
 }
 
 TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {

@@ -1,0 +1,163 @@
+#include "conformance/bench/leb_scale_bench.h"
+
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <thread>
+
+#include "conformance/bench/study.h"
+#include "conformance/framework/progress.h"
+#include "conformance/io/atomic_file.h"
+
+extern char** environ;
+
+namespace voxref::conf {
+namespace {
+
+struct ProcessRun {
+  double seconds = 0.0;
+  double peakBytes = 0.0;  // the process's peak resident memory (VmHWM)
+};
+
+// Runs this executable with `args` (argv[1...]) and waits for it; throws unless it exits with 0.
+ProcessRun runVoxref(std::vector<std::string> args) {
+  args.insert(args.begin(), "voxref");
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);  // its report is not the bench's
+  const auto start = std::chrono::steady_clock::now();
+  pid_t pid = 0;
+  const int err = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err) throw std::runtime_error("cannot start voxref " + args[1] + ": " + std::strerror(err));
+  // The peak is the process's own VmHWM, polled while it runs: wait4's ru_maxrss would report this
+  // (the spawning) process's, which Linux carries over an exec.
+  int status = 0;
+  ProcessRun r;
+  for (;;) {
+    std::ifstream statusFile("/proc/" + std::to_string(pid) + "/status");
+    for (std::string line; std::getline(statusFile, line);)
+      if (line.rfind("VmHWM:", 0) == 0) r.peakBytes = std::max(r.peakBytes, std::stod(line.substr(6)) * 1024.0);
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw std::runtime_error("waiting for voxref " + args[1] + " failed");
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    throw std::runtime_error("voxref " + args[1] + " failed in the LEB scale bench (exit status " +
+                             std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status)) + ")");
+  return r;
+}
+
+// A smooth field plus noise (uint8), x fastest, written slice by slice: the kind of volume whose
+// deltas are small but not zero (the "synthetic smooth field + noise").
+void writeSmoothNoise(const std::filesystem::path& path, const ref::Dims3& d, unsigned seed) {
+  std::ofstream out(path, std::ios::binary);
+  std::mt19937 rng(seed);
+  std::string slice(static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]), '\0');
+  for (int z = 0; z < d[2]; ++z) {
+    for (int y = 0; y < d[1]; ++y)
+      for (int x = 0; x < d[0]; ++x) {
+        const double f =
+            127.5 + 90.0 * std::sin(0.031 * x + 0.5 * std::cos(0.023 * y)) * std::cos(0.027 * z - 0.017 * y);
+        const double v = std::round(f) + static_cast<double>(rng() % 9) - 4.0;
+        slice[static_cast<std::size_t>(x) + static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(y)] =
+            static_cast<char>(std::clamp(v, 0.0, 255.0));
+      }
+    out.write(slice.data(), static_cast<std::streamsize>(slice.size()));
+  }
+  if (!out) throw std::runtime_error("cannot write " + path.string() + " for the LEB scale bench");
+}
+
+bool sameBytes(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::ifstream x(a, std::ios::binary), y(b, std::ios::binary);
+  std::string p(1 << 20, '\0'), q(1 << 20, '\0');
+  while (x && y) {
+    x.read(p.data(), static_cast<std::streamsize>(p.size()));
+    y.read(q.data(), static_cast<std::streamsize>(q.size()));
+    if (x.gcount() != y.gcount() || std::memcmp(p.data(), q.data(), static_cast<std::size_t>(x.gcount())) != 0)
+      return false;
+  }
+  return x.eof() && y.eof();
+}
+
+std::string dimsText(const ref::Dims3& d) {
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
+
+}  // namespace
+
+BenchTable lebScaleBench(const BenchOptions& o) {
+  BenchTable t;
+  t.id = kLebScaleBenchId;
+  t.title = "LEB at scale: encode and decode in processes of their own (time, peak resident memory)";
+  t.columns = {
+      "volume",      "step",        "seconds", "peak RSS", "above an idle voxref", "bytes per sample (above idle)",
+      "M samples/s", "stream bytes"};
+  const std::filesystem::path dir = o.out / "leb-scale";
+  io::ensureDirectory(dir);
+  const int side = o.quick ? 128 : 512;
+  const std::vector<ref::Dims3> volumes = {{1025, 1, 1}, {side, side, side}};
+  const ProcessRun idle = runVoxref({"--version"});  // the executable and its libraries, doing nothing
+  t.data["idle_peak_resident_bytes"] = idle.peakBytes;
+  t.rows.push_back({"none (idle: voxref --version)", "start and exit", formatNumber("%.3f", idle.seconds),
+                    bytesText(idle.peakBytes), "", "", "", ""});
+  Progress progress("voxref bench leb.scale", static_cast<long>(volumes.size()));
+  long done = 0;
+  t.data["volumes"] = nlohmann::json::array();
+  for (const ref::Dims3& d : volumes) {
+    const std::string name = dimsText(d);
+    progress.update(done++, name);
+    const std::filesystem::path raw = dir / (name + ".raw"), stream = dir / (name + ".vxleb"),
+                                back = dir / (name + ".decoded.raw"), grads = dir / (name + ".grad");
+    writeSmoothNoise(raw, d, 18);
+    const std::vector<std::string> dims = {std::to_string(d[0]), std::to_string(d[1]), std::to_string(d[2])};
+    const ProcessRun enc = runVoxref({"encode", "--codec", "leb", "--input", raw.string(), "--dims", dims[0], dims[1],
+                                      dims[2], "--out", stream.string()});
+    const ProcessRun dec = runVoxref({"decode", "--codec", "leb", "--input", stream.string(), "--out", back.string(),
+                                      "--gradients-out", grads.string()});
+    if (!sameBytes(raw, back)) throw std::runtime_error("the LEB round trip of " + name + " is not bit for bit");
+    const double samples = static_cast<double>(d[0]) * d[1] * d[2];
+    const double streamBytes = static_cast<double>(std::filesystem::file_size(stream));
+    for (const auto& [step, run] : {std::pair<const char*, const ProcessRun&>{"encode", enc}, {"decode", dec}}) {
+      const double above = std::max(0.0, run.peakBytes - idle.peakBytes);
+      t.rows.push_back({name + " uint8, smooth field + noise, gradients", step, formatNumber("%.3f", run.seconds),
+                        bytesText(run.peakBytes), bytesText(above), formatNumber("%.1f", above / samples),
+                        formatNumber("%.3g", samples / 1e6 / run.seconds), formatNumber("%.0f", streamBytes)});
+    }
+    t.data["volumes"].push_back({{"dims", {d[0], d[1], d[2]}},
+                                 {"samples", samples},
+                                 {"stream_bytes", streamBytes},
+                                 {"round_trip", "bit for bit"},
+                                 {"encode", {{"seconds", enc.seconds}, {"peak_resident_bytes", enc.peakBytes}}},
+                                 {"decode", {{"seconds", dec.seconds}, {"peak_resident_bytes", dec.peakBytes}}}});
+    for (const auto& p : {raw, stream, back, grads}) std::filesystem::remove(p);
+  }
+  progress.finish();
+  std::filesystem::remove(dir);
+  t.notes =
+      "Each step is `voxref encode --codec leb` or `voxref decode --codec leb` (with --gradients-out) run as a process "
+      "of its own; seconds are its wall time, peak RSS its VmHWM (polled every 5 ms from /proc), which includes "
+      "the executable and its libraries (the idle row: `voxref --version`), the volume read or written and, for "
+      "decode, the gradients; 'above an idle voxref' subtracts the idle peak. The decoded "
+      "samples are compared with the input bit for bit. The 1025x1x1 volume sits in a 1025^3 grid: with the padding "
+      "shell (reference/leb/leb_padding.h) and only the pages of the volume stored (FORMAT.md, version 2) it costs "
+      "what its samples cost. " +
+      std::string(o.quick ? "Quick mode: 128^3 instead of 512^3." : "");
+  return t;
+}
+
+}  // namespace voxref::conf
