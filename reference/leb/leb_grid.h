@@ -85,7 +85,7 @@ SplitEdge splitEdge(const LebGrid& g, const GridPoint& p);
 // The same closed form without checks, given p's scale and odd axes (classifyPoint), for the
 // codec's inner loops: on an odd axis p_a is h or 3h modulo 4h, and the parent cube's centre is
 // at 2h, so the edge runs up from h and down from 3h.
-inline SplitEdge splitEdgeOf(const GridPoint& p, int scaleLog2, unsigned oddAxes) {
+[[gnu::always_inline]] inline SplitEdge splitEdgeOf(const GridPoint& p, int scaleLog2, unsigned oddAxes) {
   const int h = 1 << scaleLog2;
   SplitEdge e{p, p};
   for (int a = 0; a < 3; ++a)

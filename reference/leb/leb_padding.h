@@ -38,8 +38,8 @@ inline std::size_t volumeIndex(const GridPoint& p, const Dims3& d) {
 // HzOrder walk gives them) for `components` components, equation 1 on its split edge; a root
 // corner (level -1) is predicted as 0. valueAt(q, k) is component k at endpoint q.
 template <class ValueAt>
-LebValues predictPoint(const GridPoint& p, int level, int scaleLog2, unsigned oddAxes, int components,
-                       ValueAt&& valueAt) {
+[[gnu::always_inline]] inline LebValues predictPoint(const GridPoint& p, int level, int scaleLog2, unsigned oddAxes,
+                                                     int components, ValueAt&& valueAt) {
   LebValues pred{0, 0, 0};
   if (level < 0) return pred;
   const SplitEdge e = splitEdgeOf(p, scaleLog2, oddAxes);
@@ -62,7 +62,7 @@ class LebPadding {
   // value. Throws std::logic_error for a padding point outside the shell (which the bound above
   // excludes: reaching one is a defect of the codec, never of a stream).
   template <class Inside>
-  std::int32_t valueAt(const GridPoint& q, int k, Inside&& inside) const {
+  [[gnu::always_inline]] std::int32_t valueAt(const GridPoint& q, int k, Inside&& inside) const {
     if (insideVolume(q, dims_)) return inside(volumeIndex(q, dims_), k);
     return at(q)[static_cast<std::size_t>(k)];
   }
