@@ -154,7 +154,8 @@ BenchTable lebScaleBench(const BenchOptions& o) {
       "the executable and its libraries (the idle row: `voxref --version`), the volume read or written and, for "
       "decode, the gradients; 'above an idle voxref' subtracts the idle peak. The decoded "
       "samples are compared with the input bit for bit. The 1025x1x1 volume sits in a 1025^3 grid: with the padding "
-      "shell (reference/leb/leb_padding.h) and only the pages of the volume stored (FORMAT.md, version 2) it costs "
+      "shell (reference/leb/leb_padding.h) and only the pages of the volume stored (reference/leb/FORMAT.md, version "
+      "2) it costs "
       "what its samples cost. " +
       std::string(o.quick ? "Quick mode: 128^3 instead of 512^3." : "");
   return t;
