@@ -7,7 +7,7 @@ set(voxref_test_costs
   conform.llvmpipe.sparsegrid.shard1 80  conform.llvmpipe.sparsegrid.shard2 80
   conform.llvmpipe.sparsegrid 110
   conform.softpipe.sparsegrid.shard1 120  conform.softpipe.sparsegrid.shard2 120  conform.softpipe.sparsegrid.shard3 120
-  conform.softpipe.timevarying 66  conform.llvmpipe.timevarying 60  conform.llvmpipe.iso 50
+  conform.softpipe.timevarying 130  conform.llvmpipe.timevarying 45  conform.llvmpipe.iso 50
   determinism.one_thread_one_process 45  determinism.reference 30  determinism.repeated_run 25
   determinism.in_process_vector_width_128 22
   # The HTML report's run and the bench study set up the browser tests, which take one lock
