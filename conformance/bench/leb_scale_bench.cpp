@@ -94,10 +94,6 @@ bool sameBytes(const std::filesystem::path& a, const std::filesystem::path& b) {
   return x.eof() && y.eof();
 }
 
-std::string dimsText(const ref::Dims3& d) {
-  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
-}
-
 }  // namespace
 
 BenchTable lebScaleBench(const BenchOptions& o) {
@@ -119,7 +115,7 @@ BenchTable lebScaleBench(const BenchOptions& o) {
   long done = 0;
   t.data["volumes"] = nlohmann::json::array();
   for (const ref::Dims3& d : volumes) {
-    const std::string name = dimsText(d);
+    const std::string name = ref::dimsText(d);
     progress.update(done++, name);
     const std::filesystem::path raw = dir / (name + ".raw"), stream = dir / (name + ".vxleb"),
                                 back = dir / (name + ".decoded.raw"), grads = dir / (name + ".grad");

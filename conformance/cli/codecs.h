@@ -50,8 +50,6 @@ int encodeLebCommand(const EncodeOptions& o);
 int decodeLebCommand(const DecodeOptions& o);
 int infoLebCommand(const InfoOptions& o);
 
-inline std::string dimsText(const ref::Dims3& d) {
-  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
-}
+using ref::dimsText;
 
 }  // namespace voxref::cli

@@ -16,6 +16,10 @@ using Dims3 = std::array<int, 3>;
 // Number of samples of `dims`; throws std::invalid_argument for a non-positive extent or a
 // count above `limit` (checked before any multiplication can overflow).
 std::size_t sampleCount(const Dims3& dims, std::size_t limit = std::size_t{1} << 40);
+// "XxYxZ", for messages and tables that name a volume's extents.
+inline std::string dimsText(const Dims3& d) {
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
 
 template <class T>
 class Volume {

@@ -64,6 +64,7 @@ struct RunDeltas {
 
 // Pages in runs of this many, one run per task: the runs, not the thread count, fix the work.
 constexpr std::uint64_t kPagesPerRun = 64;
+std::uint64_t runsOf(std::uint64_t pages) { return (pages + kPagesPerRun - 1) / kPagesPerRun; }
 
 // The prediction of one channel over the grid, run by run: the shell of the padding first (it
 // needs only the volume), then any run's deltas on demand, independently of the others.
@@ -79,11 +80,7 @@ class ChannelPrediction {
         padding_(order.grid(), dims, spec.components) {
     for (int level = -1; level < order.grid().levelCount(); ++level) padding_.addLevel(level, inside);
   }
-  std::uint64_t runs() const {
-    const std::uint64_t perPage = std::uint64_t{1} << pageBits_;
-    const std::uint64_t pages = (order_.size() + perPage - 1) / perPage;
-    return (pages + kPagesPerRun - 1) / kPagesPerRun;
-  }
+  std::uint64_t runs() const { return runsOf(lebPageCount(order_.grid(), pageBits_)); }
   RunDeltas run(std::uint64_t r) const {
     RunDeltas out;
     const std::uint64_t first = r * kPagesPerRun;
@@ -128,8 +125,8 @@ LebChannelPayload encodeChannel(const HzOrder& order, const Dims3& dims, const C
     if (c) counter.merge(*c);
   LebChannelPayload c{spec.kind, spec.components, spec.valueBits, spec.isSigned, counter.code(), {}, {}};
   const Lead1Encoder encoder(c.code);
-  std::vector<RunDeltas> coded(static_cast<std::size_t>(runs));  // storedPage and, per page, nothing
-  std::vector<std::vector<std::string>> bytes(static_cast<std::size_t>(runs));
+  std::vector<std::vector<std::uint32_t>> stored(static_cast<std::size_t>(runs));  // per run, its stored pages
+  std::vector<std::vector<std::string>> bytes(static_cast<std::size_t>(runs));     // and their codes
   parallelFor(runs, threads, [&](int r) {
     RunDeltas d = prediction.run(static_cast<std::uint64_t>(r));
     for (const auto& page : d.pages) {
@@ -137,10 +134,10 @@ LebChannelPayload encodeChannel(const HzOrder& order, const Dims3& dims, const C
       encoder.encodePage(page, w);
       bytes[static_cast<std::size_t>(r)].push_back(w.finish());
     }
-    coded[static_cast<std::size_t>(r)].storedPage = std::move(d.storedPage);
+    stored[static_cast<std::size_t>(r)] = std::move(d.storedPage);
   });
-  for (std::size_t r = 0; r < coded.size(); ++r) {
-    c.storedPage.insert(c.storedPage.end(), coded[r].storedPage.begin(), coded[r].storedPage.end());
+  for (std::size_t r = 0; r < stored.size(); ++r) {
+    c.storedPage.insert(c.storedPage.end(), stored[r].begin(), stored[r].end());
     for (std::string& page : bytes[r]) c.pages.push_back(std::move(page));
   }
   return c;
@@ -193,14 +190,13 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
   const LebGrid grid = lebGridCovering(dims);
   const auto samples =
       static_cast<std::uint64_t>(dims[0]) * static_cast<std::uint64_t>(dims[1]) * static_cast<std::uint64_t>(dims[2]);
-  const auto points = static_cast<std::uint64_t>(grid.pointsPerAxis());
   const std::uint64_t perPage = std::uint64_t{1} << o.pageBits;
-  const std::uint64_t pages = (points * points * points + perPage - 1) >> o.pageBits;
+  const std::uint64_t pages = lebPageCount(grid, o.pageBits);
   const std::uint64_t stored = std::min(pages, samples);  // a stored page holds a point of the volume
   const std::uint64_t shell = LebPadding::shellPoints(grid, dims) * LebPadding::kBytesPerPoint;
   // In flight: one run's deltas per worker (4 bytes a value) and the runs' counters.
   const std::uint64_t workers = static_cast<std::uint64_t>(workerCount(o.threads));
-  const std::uint64_t runs = (pages + kPagesPerRun - 1) / kPagesPerRun;
+  const std::uint64_t runs = runsOf(pages);
   auto inFlight = [&](int components) {
     return workers * std::min(samples, kPagesPerRun * perPage) * static_cast<std::uint64_t>(components) * 4 +
            runs * 88 + std::min(runs, samples) * (17 * 17 * 8 + 64);
@@ -270,7 +266,7 @@ LebDecoded decodeLeb(const LebStream& s, int threads) {
         const Segment& seg = segments[static_cast<std::size_t>(i)];
         walkInside(order, s.dims, padding, inside, spec.components, seg.begin, seg.end,
                    [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
-                     if (!seg.reader) openPage(s, ch, h >> pb);  // throws: the page holds a point, but is not stored
+                     if (!seg.reader) throw pageNotStored(ch, h >> pb);
                      const std::int32_t v = reconstructSample(pred, seg.reader->next(), spec.valueBits, spec.isSigned);
                      if (data)
                        out.data.data()[vi] = static_cast<std::uint16_t>(v);

@@ -22,12 +22,15 @@ std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pa
   return n;
 }
 
+StreamError pageNotStored(const LebChannel& c, std::uint64_t page) {
+  return StreamError(c.descriptorOffset, pageName(c, page) +
+                                             " holds points of the volume, but the stream does not store it (the page "
+                                             "table lacks it)");
+}
+
 Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
   const std::ptrdiff_t slot = c.slotOf(page);
-  if (slot < 0)
-    throw StreamError(c.descriptorOffset, pageName(c, page) +
-                                              " holds points of the volume, but the stream does not store it (the "
-                                              "page table lacks it)");
+  if (slot < 0) throw pageNotStored(c, page);
   const auto j = static_cast<std::size_t>(slot);
   const std::string_view bytes = s.page(c, j);
   const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[j]);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "reference/common/byte_stream.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_stream.h"
@@ -15,6 +16,9 @@ namespace voxref::ref {
 
 // How many of the page's points lie inside the volume (a walk over the page's indices).
 std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page);
+
+// The error of a page that holds points of the volume but is not in the stream's page table.
+StreamError pageNotStored(const LebChannel& c, std::uint64_t page);
 
 // Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
 // a reader of its deltas; the page holds one delta per component of each point inside the volume.

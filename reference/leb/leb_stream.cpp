@@ -7,20 +7,9 @@
 #include "reference/common/crc32.h"
 
 namespace voxref::ref {
-namespace {
+namespace {}  // namespace
 
-std::uint64_t pagesFor(const LebGrid& g, int pageBits) {
-  const std::uint64_t per = std::uint64_t{1} << pageBits;
-  return (g.pointCount() + per - 1) / per;
-}
-
-std::string dimsText(const Dims3& d) {
-  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
-}
-
-}  // namespace
-
-std::uint64_t LebStream::pageCount() const { return pagesFor(grid, pageBits); }
+std::uint64_t LebStream::pageCount() const { return lebPageCount(grid, pageBits); }
 
 std::ptrdiff_t LebChannel::slotOf(std::uint64_t page) const {
   const auto it = std::lower_bound(storedPage.begin(), storedPage.end(), page);
@@ -52,7 +41,7 @@ std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid&
   w.le<std::uint16_t>(0);
   w.le<std::uint64_t>(0);  // total bytes, patched below
   w.le<std::uint32_t>(0);  // header CRC, patched below
-  const std::uint64_t pages = pagesFor(grid, pageBits);
+  const std::uint64_t pages = lebPageCount(grid, pageBits);
   // Section 2: per channel, a descriptor and the pages.
   for (const LebChannelPayload& c : channels) {
     if (c.pages.size() != c.storedPage.size() || c.pages.empty() ||

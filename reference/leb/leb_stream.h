@@ -64,6 +64,10 @@ struct LebStream {
 inline constexpr std::size_t kLebHeaderBytes = 36;
 inline constexpr int kLebVersion = 2;
 inline constexpr int kMinLebPageBits = 4, kMaxLebPageBits = 20;
+// The pages of a grid in pages of 2^pageBits indices, stored or not: ceil((2^k + 1)^3 / 2^pageBits).
+inline std::uint64_t lebPageCount(const LebGrid& grid, int pageBits) {
+  return (grid.pointCount() + (std::uint64_t{1} << pageBits) - 1) >> pageBits;
+}
 
 // The pieces the encoder hands over; serializeLebStream lays them out (and computes every CRC).
 struct LebChannelPayload {
