@@ -338,6 +338,18 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   const Timing p2 = measure([&] { out = decodePagesOnly(*e.stream, ps, 2); });
   t.rows.push_back({"page decompression (lead-1 decoding only), MB/s of deltas", mbps(out, p1.median),
                     mbps(out, p2.median), "50-70 (10-110)"});
+  // The anchor of the same run: zstd -19 decoding the same deltas (one byte each for 8-bit data and
+  // gradient components, as deltaBytes gives them; one frame per channel, libzstd's one thread).
+  const std::string dDeltas = deltaBytes(ref::lebDeltas(d->volume, d->bits, ref::LebChannelKind::Data), d->bits),
+                    gDeltas = deltaBytes(ref::lebDeltas(d->volume, d->bits, ref::LebChannelKind::Gradients), 8);
+  const BaselineResult zd = zstdBaseline(dDeltas, 19), zg = zstdBaseline(gDeltas, 19);
+  const double zstdBytes = static_cast<double>(dDeltas.size() + gDeltas.size());
+  const double zstdSeconds = zd.decompress.median + zg.decompress.median;
+  t.rows.push_back({"zstd -19 decode of the same deltas (one thread), MB/s", mbps(zstdBytes, zstdSeconds), "-", ""});
+  const double zstdRate = zstdBytes / zstdSeconds;
+  t.rows.push_back({"page decompression / zstd -19 decode (goal >= 0.5)",
+                    formatNumber("%.2f", out / p1.median / zstdRate), formatNumber("%.2f", out / p2.median / zstdRate),
+                    ""});
   const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
   const Timing w1 = measure([&] { (void)ref::decodeLeb(*e.stream, 1); });
   const Timing w2 = measure([&] { (void)ref::decodeLeb(*e.stream, 2); });
@@ -363,6 +375,8 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
                                          {"page_decodes_per_point", r1.pageMissesPerPoint}});
     }
   t.data["pages"] = {{"output_bytes", out}, {"one_thread", toJson(p1)}, {"two_threads", toJson(p2)}};
+  t.data["zstd19_decode"] = {
+      {"output_bytes", zstdBytes}, {"data", toJson(zd.decompress)}, {"gradients", toJson(zg.decompress)}};
   t.data["whole"] = {{"output_bytes", volumeBytes}, {"one_thread", toJson(w1)}, {"two_threads", toJson(w2)}};
   t.notes =
       "Page decompression decodes every page of both channels with the lead-1 decoder (the deltas, 1 byte each for "

@@ -3,8 +3,10 @@
 // peeked bits (FORMAT.md, section "Page payload").
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -62,6 +64,18 @@ class BitReader {
 
  private:
   void refill() {
+    if (next_ + 8 <= size_) {
+      // Eight bytes at once, most significant first. Bits beyond the whole bytes counted are the
+      // stream's own next bits, so OR-ing them in again at the next refill changes nothing.
+      std::uint64_t w;
+      std::memcpy(&w, p_ + next_, 8);
+      if constexpr (std::endian::native == std::endian::little) w = __builtin_bswap64(w);
+      buf_ |= w >> avail_;
+      const int bytes = (63 - avail_) >> 3;
+      next_ += static_cast<std::size_t>(bytes);
+      avail_ += 8 * bytes;
+      return;
+    }
     while (avail_ <= 56) {
       const std::uint64_t byte = next_ < size_ ? p_[next_] : 0;
       ++next_;

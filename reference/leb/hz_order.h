@@ -189,6 +189,18 @@ void mortonDescend(int nf, const int* limit, int r, std::uint64_t m0, const int*
   for (int i = 0; i < nf; ++i)
     if (c0[i] >= limit[i]) return;  // every cell of the node lies past the box on axis i
   if (r == 0) return leaf(m0, c0);
+  // A node wholly inside the box and the range: its cells in code order, without descending.
+  bool whole = m0 >= mlo && m0 + span <= mhi;
+  for (int i = 0; i < nf; ++i) whole = whole && c0[i] + (1 << r) <= limit[i];
+  if (whole) {
+    for (std::uint64_t m = 0; m < span; ++m) {
+      int c[3] = {0, 0, 0};
+      mortonDecode(m, nf, c);
+      for (int i = 0; i < nf; ++i) c[i] += c0[i];
+      leaf(m0 + m, c);
+    }
+    return;
+  }
   const std::uint64_t childSpan = span >> nf;
   for (unsigned j = 0; j < (1u << nf); ++j) {
     int c[3] = {0, 0, 0};

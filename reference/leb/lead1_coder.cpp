@@ -86,6 +86,31 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
   for (int ctx = 0; ctx < symbols_; ++ctx)
     tables_.emplace_back(std::span<const std::uint8_t>(code.lengths)
                              .subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
+  // The one-lookup entries: every kFastBits-bit window whose leading bits hold a whole value of
+  // the context's code (the same code, sign and magnitude rules as nextByTable).
+  constexpr int F = kFastBits;
+  fast_.assign(static_cast<std::size_t>(symbols_) << F, 0);
+  const std::uint32_t limit = 1u << (valueBits_ - 1);
+  for (int ctx = 0; ctx < symbols_; ++ctx) {
+    const HuffmanDecodeTable& t = tables_[static_cast<std::size_t>(ctx)];
+    if (t.empty()) continue;
+    for (std::uint32_t window = 0; window < (1u << F); ++window) {
+      const std::uint16_t e = t.entry(t.bits() <= F ? window >> (F - t.bits()) : window << (t.bits() - F));
+      const int length = e & 15, s = e >> 4;
+      if (e == 0 || length + s > F) continue;
+      std::int32_t d = 0;
+      if (s > 0) {
+        const std::uint32_t bits = (window >> (F - length - s)) & ((1u << s) - 1);
+        const bool negative = (bits >> (s - 1)) & 1;
+        const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
+        if (m > limit || (m == limit && !negative)) continue;
+        d = negative ? -static_cast<std::int32_t>(m) : static_cast<std::int32_t>(m);
+      }
+      fast_[(static_cast<std::size_t>(ctx) << F) | window] =
+          static_cast<std::uint32_t>(length + s) | static_cast<std::uint32_t>(s) << 5 |
+          static_cast<std::uint32_t>(static_cast<std::uint16_t>(d)) << 16;
+    }
+  }
 }
 
 void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
@@ -104,7 +129,7 @@ void Lead1PageReader::fail(const std::string& detail) const {
                     what_ + ": value " + std::to_string(read_) + ": " + detail);
 }
 
-std::int32_t Lead1PageReader::next() {
+std::int32_t Lead1PageReader::nextByTable() {
   const HuffmanDecodeTable& t = decoder_->tables_[static_cast<std::size_t>(context_)];
   if (t.empty())
     fail("context " + std::to_string(context_) + " has no codes, yet a value follows a symbol " +

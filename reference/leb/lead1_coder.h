@@ -76,11 +76,21 @@ class Lead1Decoder {
   void decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
                   std::string_view what) const;
 
+  // Whole values by one lookup: fastEntry(context, next kFastBits bits) is 0, or the value's bits
+  // (code, sign and magnitude; bits 0-4), its symbol (the next context; bits 5-9) and the delta
+  // (int16, bits 16-31). 0 where the value is longer than kFastBits, no code matches, or the
+  // magnitude is out of range: the reader then takes the table path, which names the problem.
+  static constexpr int kFastBits = 10;
+  std::uint32_t fastEntry(int context, std::uint32_t peeked) const {
+    return fast_[(static_cast<std::size_t>(context) << kFastBits) | peeked];
+  }
+
  private:
   friend class Lead1PageReader;
   int valueBits_;
   int symbols_;
   std::vector<HuffmanDecodeTable> tables_;
+  std::vector<std::uint32_t> fast_;
 };
 
 // Reads the deltas of one page one at a time, for a decoder that does not know in advance how
@@ -89,11 +99,23 @@ class Lead1Decoder {
 class Lead1PageReader {
  public:
   Lead1PageReader(const Lead1Decoder& decoder, std::string_view page, std::size_t streamOffset, std::string what);
-  std::int32_t next();  // throws StreamError: no code matches, the page ends, a delta out of range
+  // Throws StreamError: no code matches, the page ends, a delta out of range.
+  std::int32_t next() {
+    const std::uint32_t e = decoder_->fastEntry(context_, in_.peek(Lead1Decoder::kFastBits));
+    if (e == 0) [[unlikely]]
+      return nextByTable();
+    in_.skip(static_cast<int>(e & 31));
+    if (in_.overrun()) [[unlikely]]
+      fail("the page ends inside this value");
+    ++read_;
+    context_ = static_cast<int>((e >> 5) & 31);
+    return static_cast<std::int16_t>(e >> 16);
+  }
   void finish() const;  // throws StreamError unless only the zero padding of the last byte is left
   std::size_t valuesRead() const { return read_; }
 
  private:
+  std::int32_t nextByTable();  // the code by its table, then sign and magnitude
   [[noreturn]] void fail(const std::string& detail) const;
   const Lead1Decoder* decoder_;
   std::string_view page_;

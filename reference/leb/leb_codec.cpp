@@ -44,16 +44,56 @@ struct InsideValues {
 // from its split edge (endpoints inside the volume from `inside`, in the padding from the shell,
 // leb_padding.h); valueOf(vi, component, prediction) gives its value (the encoder reads the sample
 // and records the delta; the decoder reads the delta and writes the sample).
+//
+// A point whose split-edge endpoints both lie inside the volume (all but the points next to the
+// padding) reads them at volume indices vi + off and vi - off: on every odd axis the edge runs
+// sigma = +-h from p (splitEdgeOf), so off = sum of sigma_a * stride_a. read(vi, k) is component k
+// of `inside`, with the component count fixed at compile time.
+template <int Components, class Read, class ValueOf>
+void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
+                 Read&& read, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
+  const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
+  order.forEachInside(
+      dims, begin, end, [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
+        const std::size_t vi = volumeIndex(p, dims);
+        LebValues pred{0, 0, 0};
+        if (level >= 0) {
+          const int step = 1 << scaleLog2;
+          std::ptrdiff_t off = 0;
+          bool within = true;
+          for (int a = 0; a < 3; ++a)
+            if ((odd >> a) & 1u) {
+              within = within && p[a] + step < dims[a];
+              off += (((p[a] >> (scaleLog2 + 1)) & 1) ? -step : step) * stride[a];
+            }
+          if (within) {
+            const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
+            const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+            for (int k = 0; k < Components; ++k)
+              pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
+          } else {
+            pred = predictPoint(p, level, scaleLog2, odd, Components,
+                                [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
+          }
+        }
+        for (int k = 0; k < Components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
+      });
+}
+
 template <class ValueOf>
 void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
                 int components, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
-  order.forEachInside(
-      dims, begin, end, [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
-        const LebValues pred = predictPoint(p, level, scaleLog2, odd, components,
-                                            [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
-        const std::size_t vi = volumeIndex(p, dims);
-        for (int k = 0; k < components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
-      });
+  if (components == 1)
+    walkChannel<1>(
+        order, dims, padding, inside, [&](std::size_t vi, int) { return static_cast<std::int32_t>(inside.data[vi]); },
+        begin, end, valueOf);
+  else
+    walkChannel<3>(
+        order, dims, padding, inside,
+        [&](std::size_t vi, int k) {
+          return static_cast<std::int32_t>(inside.gradients[3 * vi + static_cast<std::size_t>(k)]);
+        },
+        begin, end, valueOf);
 }
 
 // The deltas of a run of pages, per stored page (the pages that hold a point of the volume).

@@ -8,6 +8,7 @@
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
 #include "reference/leb/gradients.h"
+#include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_page.h"
 #include "reference/leb/leb_reader.h"
@@ -77,6 +78,40 @@ TEST(LebCodec, SameBytesForEveryThreadCount) {
   EXPECT_EQ(a, b);
   const LebStream s = parseLebStream(a);
   EXPECT_EQ(decodeLeb(s, 1).data.data(), decodeLeb(s, 2).data.data());
+}
+
+// The deltas of equation 2 from the closed form, point by point in H order (HzOrder::point,
+// splitEdge): the sample minus the floor of its split edge's endpoints' mean, wrapped to 8 bits.
+// In a volume with padding only the points whose split edge lies inside the volume are checked
+// (the others are predicted from the padding, leb_padding.h): the encoder reads those endpoints
+// at index offsets, and this catches an offset or a boundary test that is wrong.
+TEST(LebCodec, DeltasAreTheSplitEdgeMidpointPrediction) {
+  for (const Dims3 d : {Dims3{17, 17, 17}, Dims3{13, 17, 10}, Dims3{17, 5, 16}}) {
+    SCOPED_TRACE(dimsText(d));
+    const Volume<std::uint16_t> v = noise(d, 8, 7);
+    const LebGrid g = lebGridCovering(d);
+    const HzOrder order(g);
+    const std::vector<std::int32_t> deltas = lebDeltas(v, 8, LebChannelKind::Data);
+    auto inside = [&](const GridPoint& q) { return q[0] < d[0] && q[1] < d[1] && q[2] < d[2]; };
+    auto value = [&](const GridPoint& q) { return static_cast<int>(v.at(q[0], q[1], q[2])); };
+    std::size_t next = 0, checked = 0;
+    for (std::uint64_t h = 0; h < order.size(); ++h) {
+      const GridPoint p = order.point(h);
+      if (!inside(p)) continue;
+      ASSERT_LT(next, deltas.size());
+      const std::int32_t delta = deltas[next++];
+      int prediction = 0;
+      if (!isRootCorner(g, p)) {
+        const SplitEdge e = splitEdge(g, p);
+        if (!inside(e.a) || !inside(e.b)) continue;
+        prediction = (value(e.a) + value(e.b)) / 2;  // both >= 0: floor
+      }
+      EXPECT_EQ(delta, ((value(p) - prediction + 128) & 255) - 128) << pointText(p);
+      ++checked;
+    }
+    EXPECT_EQ(next, deltas.size());
+    EXPECT_GT(checked, deltas.size() / 2);
+  }
 }
 
 TEST(LebCodec, PaddingCostsNoPayload) {
