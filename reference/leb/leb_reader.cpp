@@ -9,7 +9,14 @@
 namespace voxref::ref {
 
 LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheBudgetBytes)
-    : stream_(std::move(stream)), order_(stream_->grid), cache_(cacheBudgetBytes) {}
+    : stream_(std::move(stream)),
+      order_(stream_->grid),
+      cache_(cacheBudgetBytes),
+      memoCapacity_(cacheBudgetBytes / kMemoEntryBytes) {}
+
+void LebReader::beginQuery() {
+  if (memo_.size() > memoCapacity_) memo_.clear();
+}
 
 const LebChannel& LebReader::channel(LebChannelKind kind) const {
   const LebChannel* c = stream_->channel(kind);
@@ -21,7 +28,8 @@ const LebChannel& LebReader::channel(LebChannelKind kind) const {
 
 LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
   const std::uint64_t h = order_.index(p);  // throws for a point outside the grid
-  if (const auto it = memo_.find(h); it != memo_.end()) return it->second;
+  const std::uint64_t memoKey = (h << 1) | static_cast<std::uint64_t>(c.kind);
+  if (const auto it = memo_.find(memoKey); it != memo_.end()) return it->second;
   Values pred{0, 0, 0};
   const LebPointClass pc = classifyPoint(stream_->grid, p);
   if (pc.level >= 0) {
@@ -35,7 +43,8 @@ LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
   if (insideVolume(p, stream_->dims)) {
     const std::uint64_t page = h >> stream_->pageBits;
     const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
-    const PageCache::Page deltas = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+    PageCache::Page deltas = cache_.find(key);  // the hit path builds no std::function
+    if (!deltas) deltas = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
     const std::size_t at =
         static_cast<std::size_t>(h - (page << stream_->pageBits)) * static_cast<std::size_t>(c.components);
     for (int k = 0; k < c.components; ++k)
@@ -43,17 +52,17 @@ LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
           pred[static_cast<std::size_t>(k)], (*deltas)[at + static_cast<std::size_t>(k)], c.valueBits, c.isSigned);
   }
   ++reconstructed_;
-  memo_.emplace(h, v);
+  memo_.emplace(memoKey, v);
   return v;
 }
 
 std::uint16_t LebReader::sample(const GridPoint& p) {
-  memo_.clear();
+  beginQuery();
   return static_cast<std::uint16_t>(valueAt(channel(LebChannelKind::Data), p)[0]);
 }
 
 std::array<std::int8_t, 3> LebReader::gradient(const GridPoint& p) {
-  memo_.clear();
+  beginQuery();
   const Values v = valueAt(channel(LebChannelKind::Gradients), p);
   return {static_cast<std::int8_t>(v[0]), static_cast<std::int8_t>(v[1]), static_cast<std::int8_t>(v[2])};
 }
@@ -63,7 +72,7 @@ std::vector<std::int32_t> LebReader::reconstructPage(LebChannelKind kind, std::u
   if (page >= stream_->pageCount())
     throw std::invalid_argument("page " + std::to_string(page) + " is outside the stream's " +
                                 std::to_string(stream_->pageCount()) + " pages");
-  memo_.clear();
+  beginQuery();
   const std::size_t comps = static_cast<std::size_t>(c.components);
   std::vector<std::int32_t> out((std::size_t{1} << stream_->pageBits) * comps, 0);
   const std::uint64_t begin = page << stream_->pageBits, end = std::min(order_.size(), (page + 1) << stream_->pageBits);
@@ -71,7 +80,7 @@ std::vector<std::int32_t> LebReader::reconstructPage(LebChannelKind kind, std::u
     const Values v = valueAt(c, cur.point());
     for (std::size_t k = 0; k < comps; ++k) out[static_cast<std::size_t>(cur.index() - begin) * comps + k] = v[k];
   }
-  memo_.clear();
+  beginQuery();
   return out;
 }
 

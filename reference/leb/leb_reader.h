@@ -4,13 +4,18 @@
 // value(p) finds p's page by its hierarchical index, takes the page's deltas from the cache
 // (decoding the page on a miss), and adds them to the prediction from p's split edge, whose
 // endpoint values are reconstructed the same way (recursively: the "reconstruction mask"; every
-// endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels). Values of
-// one query are memoised, so a point is reconstructed once per query. Bit-identical to decodeLeb.
+// endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels).
+// Reconstructed values are memoised, per channel and hierarchical index, and the memo is kept
+// between queries while it holds at most cacheBudgetBytes / kMemoEntryBytes entries (it is
+// emptied before a query when it holds more): neighbouring queries share their coarse ancestors,
+// so a query in a region already visited reconstructs little more than its own point. A point is
+// reconstructed at most once per query. Bit-identical to decodeLeb.
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
-// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo of one query (an
-// entry per point its reconstruction touches: the points asked for and their coarser split-edge
-// ancestors), plus reconstructPage's result, 2^pageBits x components x 4 bytes (at most 12 MiB).
+// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo (about the budget
+// again: kMemoEntryBytes covers an entry of the hash map; beyond that, the entries of one query:
+// the points asked for and their coarser split-edge ancestors), plus reconstructPage's result,
+// 2^pageBits x components x 4 bytes (at most 12 MiB).
 // Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
 // page (when it is decoded), std::invalid_argument for a point outside the grid or a channel the
 // stream lacks. Not thread-safe: use one reader per thread (they can share the stream).
@@ -44,15 +49,21 @@ class LebReader {
   const PageCache::Stats& cacheStats() const { return cache_.stats(); }
   std::uint64_t pointsReconstructed() const { return reconstructed_; }
 
+  // What the memo's capacity charges an entry, in bytes (key, values, node and bucket).
+  static constexpr std::size_t kMemoEntryBytes = 64;
+
  private:
   using Values = std::array<std::int32_t, 3>;
+  // Starts a query: empties the memo if it is over its capacity.
+  void beginQuery();
   Values valueAt(const LebChannel& c, const GridPoint& p);
   const LebChannel& channel(LebChannelKind kind) const;
 
   std::shared_ptr<const LebStream> stream_;
   HzOrder order_;
   PageCache cache_;
-  std::unordered_map<std::uint64_t, Values> memo_;  // hierarchical index -> values, one query
+  std::size_t memoCapacity_;
+  std::unordered_map<std::uint64_t, Values> memo_;  // (hierarchical index, channel) -> values
   std::uint64_t reconstructed_ = 0;
 };
 

@@ -4,12 +4,16 @@
 
 namespace voxref::ref {
 
+PageCache::Page PageCache::find(std::uint64_t key) {
+  const auto it = index_.find(key);
+  if (it == index_.end()) return nullptr;
+  ++stats_.hits;
+  lru_.splice(lru_.begin(), lru_, it->second);
+  return it->second->page;
+}
+
 PageCache::Page PageCache::get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode) {
-  if (const auto it = index_.find(key); it != index_.end()) {
-    ++stats_.hits;
-    lru_.splice(lru_.begin(), lru_, it->second);
-    return it->second->page;
-  }
+  if (Page hit = find(key)) return hit;
   ++stats_.misses;
   Page page = std::make_shared<const std::vector<std::int16_t>>(decode());
   const std::size_t cost = page->size() * sizeof(std::int16_t);

@@ -28,6 +28,8 @@ class PageCache {
   explicit PageCache(std::size_t budgetBytes) : budget_(budgetBytes) {}
   // The page under `key`, calling decode() on a miss.
   Page get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode);
+  // The page under `key` if it is cached (a hit, made the most recent), else null (nothing counted).
+  Page find(std::uint64_t key);
   const Stats& stats() const { return stats_; }
   std::size_t budget() const { return budget_; }
 

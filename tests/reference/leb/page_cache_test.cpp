@@ -34,6 +34,23 @@ TEST(PageCache, KeepsTheMostRecentlyUsedPagesWithinTheBudget) {
   EXPECT_EQ(cache.stats().peakBytes, 600u);
 }
 
+TEST(PageCache, FindIsAHitOrNothing) {
+  PageCache cache(2 * 200);  // two pages of 100 values
+  int decodes = 0;
+  EXPECT_EQ(cache.find(1), nullptr);
+  EXPECT_EQ(cache.stats().misses, 0u);
+  cache.get(1, page(100, &decodes));
+  cache.get(2, page(100, &decodes));
+  ASSERT_NE(cache.find(1), nullptr);  // a hit: 2 is now the least recently used
+  EXPECT_EQ(cache.stats().hits, 1u);
+  cache.get(3, page(100, &decodes));  // evicts 2
+  EXPECT_EQ(cache.find(2), nullptr);
+  EXPECT_NE(cache.find(1), nullptr);
+  EXPECT_EQ(decodes, 3);
+  EXPECT_EQ(cache.stats().hits, 2u);
+  EXPECT_EQ(cache.stats().misses, 3u);
+}
+
 TEST(PageCache, APageLargerThanTheBudgetIsHandedOutButNotKept) {
   PageCache cache(100);
   int decodes = 0;
