@@ -117,6 +117,15 @@ std::string deltaBytes(const std::vector<std::int32_t>& deltas, int bits) {
   return b;
 }
 
+// The deltas of both channels of a data set, as deltaBytes gives them (gradient components 8 bits).
+struct ChannelDeltaBytes {
+  std::string data, gradients;
+};
+ChannelDeltaBytes predictionDeltaBytes(const LebDataset& d) {
+  return {deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Data), d.bits),
+          deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Gradients), 8)};
+}
+
 std::string ratio(double r) { return formatNumber("%.3f:1", r); }
 std::string mbps(double bytes, double seconds) { return formatNumber("%.1f", bytes / 1e6 / seconds); }
 
@@ -177,13 +186,10 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
                              {"decode", toJson(e.decode)}});
 
     // The same prediction, coded by zstd instead of lead-1 Huffman: separates predictor and coder.
-    std::string dDeltas, gDeltas;
-    const Timing predict = measureOnce([&] {
-      dDeltas = deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Data), d.bits);
-      gDeltas = deltaBytes(ref::lebDeltas(d.volume, d.bits, ref::LebChannelKind::Gradients), 8);
-    });
+    ChannelDeltaBytes deltas;
+    const Timing predict = measureOnce([&] { deltas = predictionDeltaBytes(d); });
     {
-      const BaselineResult zd = zstdBaseline(dDeltas, 19), zg = zstdBaseline(gDeltas, 19);
+      const BaselineResult zd = zstdBaseline(deltas.data, 19), zg = zstdBaseline(deltas.gradients, 19);
       const double bytes = static_cast<double>(zd.bytes + zg.bytes);
       t.rows.push_back({d.name, "LEB prediction + zstd -19", ratio(rawAll / bytes), ratio(zd.ratio(raw.size())),
                         ratio(zg.ratio(grad.size())), std::to_string(zd.bytes + zg.bytes),
@@ -340,10 +346,9 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
                     mbps(out, p2.median), "50-70 (10-110)"});
   // The anchor of the same run: zstd -19 decoding the same deltas (one byte each for 8-bit data and
   // gradient components, as deltaBytes gives them; one frame per channel, libzstd's one thread).
-  const std::string dDeltas = deltaBytes(ref::lebDeltas(d->volume, d->bits, ref::LebChannelKind::Data), d->bits),
-                    gDeltas = deltaBytes(ref::lebDeltas(d->volume, d->bits, ref::LebChannelKind::Gradients), 8);
-  const BaselineResult zd = zstdBaseline(dDeltas, 19), zg = zstdBaseline(gDeltas, 19);
-  const double zstdBytes = static_cast<double>(dDeltas.size() + gDeltas.size());
+  const ChannelDeltaBytes deltas = predictionDeltaBytes(*d);
+  const BaselineResult zd = zstdBaseline(deltas.data, 19), zg = zstdBaseline(deltas.gradients, 19);
+  const double zstdBytes = static_cast<double>(deltas.data.size() + deltas.gradients.size());
   const double zstdSeconds = zd.decompress.median + zg.decompress.median;
   t.rows.push_back({"zstd -19 decode of the same deltas (one thread), MB/s", mbps(zstdBytes, zstdSeconds), "-", ""});
   const double zstdRate = zstdBytes / zstdSeconds;

@@ -81,6 +81,28 @@ void Lead1Encoder::encodePage(std::span<const std::int32_t> deltas, BitWriter& o
   }
 }
 
+namespace {
+
+// The delta of a value's s > 0 sign-and-magnitude bits (FORMAT.md, "Page payload"): the sign bit
+// first, then the magnitude's bits below its leading 1. One function for the one-lookup table and
+// the table path, so the two cannot disagree.
+struct SignMagnitude {
+  bool negative;
+  std::uint32_t magnitude;
+  bool inRange;  // |delta| fits valueBits two's complement
+  std::int32_t delta() const {
+    return negative ? -static_cast<std::int32_t>(magnitude) : static_cast<std::int32_t>(magnitude);
+  }
+};
+SignMagnitude signMagnitude(std::uint32_t bits, int s, int valueBits) {
+  const bool negative = (bits >> (s - 1)) & 1;
+  const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
+  const std::uint32_t limit = 1u << (valueBits - 1);
+  return {negative, m, !(m > limit || (m == limit && !negative))};
+}
+
+}  // namespace
+
 Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), symbols_(code.symbols()) {
   if (const std::string p = lead1CodeProblem(code); !p.empty()) throw std::invalid_argument("lead-1 code: " + p);
   for (int ctx = 0; ctx < symbols_; ++ctx)
@@ -90,7 +112,6 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
   // the context's code (the same code, sign and magnitude rules as nextByTable).
   constexpr int F = kFastBits;
   fast_.assign(static_cast<std::size_t>(symbols_) << F, 0);
-  const std::uint32_t limit = 1u << (valueBits_ - 1);
   for (int ctx = 0; ctx < symbols_; ++ctx) {
     const HuffmanDecodeTable& t = tables_[static_cast<std::size_t>(ctx)];
     if (t.empty()) continue;
@@ -100,11 +121,9 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
       if (e == 0 || length + s > F) continue;
       std::int32_t d = 0;
       if (s > 0) {
-        const std::uint32_t bits = (window >> (F - length - s)) & ((1u << s) - 1);
-        const bool negative = (bits >> (s - 1)) & 1;
-        const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
-        if (m > limit || (m == limit && !negative)) continue;
-        d = negative ? -static_cast<std::int32_t>(m) : static_cast<std::int32_t>(m);
+        const SignMagnitude v = signMagnitude((window >> (F - length - s)) & ((1u << s) - 1), s, valueBits_);
+        if (!v.inRange) continue;
+        d = v.delta();
       }
       fast_[(static_cast<std::size_t>(ctx) << F) | window] =
           static_cast<std::uint32_t>(length + s) | static_cast<std::uint32_t>(s) << 5 |
@@ -143,13 +162,11 @@ std::int32_t Lead1PageReader::nextByTable() {
   if (s > 0) {
     const std::uint32_t bits = in_.get(s);
     if (in_.overrun()) fail("the page ends inside this value");
-    const bool negative = (bits >> (s - 1)) & 1;
-    const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
-    const std::uint32_t limit = 1u << (decoder_->valueBits_ - 1);
-    if (m > limit || (m == limit && !negative))
-      fail("delta " + std::string(negative ? "-" : "+") + std::to_string(m) + " is outside the " +
+    const SignMagnitude v = signMagnitude(bits, s, decoder_->valueBits_);
+    if (!v.inRange)
+      fail("delta " + std::string(v.negative ? "-" : "+") + std::to_string(v.magnitude) + " is outside the " +
            std::to_string(decoder_->valueBits_) + "-bit range");
-    d = negative ? -static_cast<std::int32_t>(m) : static_cast<std::int32_t>(m);
+    d = v.delta();
   }
   if (in_.overrun()) fail("the page ends inside this value");
   ++read_;

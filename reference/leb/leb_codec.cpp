@@ -47,7 +47,7 @@ struct InsideValues {
 //
 // A point whose split-edge endpoints both lie inside the volume (all but the points next to the
 // padding) reads them at volume indices vi + off and vi - off: on every odd axis the edge runs
-// sigma = +-h from p (splitEdgeOf), so off = sum of sigma_a * stride_a. read(vi, k) is component k
+// sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a. read(vi, k) is component k
 // of `inside`, with the component count fixed at compile time.
 template <int Components, class Read, class ValueOf>
 void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
@@ -64,7 +64,7 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
           for (int a = 0; a < 3; ++a)
             if ((odd >> a) & 1u) {
               within = within && p[a] + step < dims[a];
-              off += (((p[a] >> (scaleLog2 + 1)) & 1) ? -step : step) * stride[a];
+              off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
             }
           if (within) {
             const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);

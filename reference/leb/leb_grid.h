@@ -85,12 +85,16 @@ SplitEdge splitEdge(const LebGrid& g, const GridPoint& p);
 // The same closed form without checks, given p's scale and odd axes (classifyPoint), for the
 // codec's inner loops: on an odd axis p_a is h or 3h modulo 4h, and the parent cube's centre is
 // at 2h, so the edge runs up from h and down from 3h.
-[[gnu::always_inline]] inline SplitEdge splitEdgeOf(const GridPoint& p, int scaleLog2, unsigned oddAxes) {
+// splitEdgeSigma gives, on an odd axis a, the signed step from p to endpoint a.
+[[gnu::always_inline]] inline int splitEdgeSigma(const GridPoint& p, int scaleLog2, int a) {
   const int h = 1 << scaleLog2;
+  return ((p[a] >> (scaleLog2 + 1)) & 1) ? -h : h;
+}
+[[gnu::always_inline]] inline SplitEdge splitEdgeOf(const GridPoint& p, int scaleLog2, unsigned oddAxes) {
   SplitEdge e{p, p};
   for (int a = 0; a < 3; ++a)
     if ((oddAxes >> a) & 1) {
-      const int sigma = ((p[a] >> (scaleLog2 + 1)) & 1) ? -h : h;
+      const int sigma = splitEdgeSigma(p, scaleLog2, a);
       e.a[a] = p[a] + sigma;
       e.b[a] = p[a] - sigma;
     }
