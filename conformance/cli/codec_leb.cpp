@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -12,9 +13,11 @@
 
 #include "conformance/cli/codecs.h"
 #include "conformance/framework/exit_status.h"
+#include "conformance/framework/progress.h"
 #include "conformance/framework/stopwatch.h"
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/leb_file.h"
+#include "conformance/io/leb_file_codec.h"
 #include "conformance/io/raw_volume.h"
 #include "reference/common/byte_stream.h"
 #include "reference/iso/diamond_bounds.h"
@@ -93,37 +96,55 @@ int encodeLebCommand(const EncodeOptions& o) {
   // predictions reach: leb_padding.h). Refused before the volume is read when the process may not
   // allocate it.
   (void)io::voxelsOf(o.inputs[0], dims);  // extents that are not positive or too many: named before any other check
+  const ref::LebGrid grid = ref::lebGridCovering(dims);
+  const bool bounds = !o.boundsOut.empty();
   std::uint64_t need = 0;
   try {
-    need = ref::lebEncodeMemoryBytes(dims, options) + 2 * ref::sampleCount(dims);  // + the volume, widened to 16 bits
+    // Without bounds the encoder streams from the file (conformance/io/leb_file_codec.h); the
+    // bounds need the volume in memory, and the stream is then made there too, so that the two
+    // files are written together.
+    need = bounds ? ref::lebEncodeMemoryBytes(dims, options) + 2 * ref::sampleCount(dims)  // + the volume at 16 bits
+                  : io::lebFileEncodeAddressBytes(dims, *type, options);
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
   }
-  const ref::LebGrid grid = ref::lebGridCovering(dims);
-  if (!o.boundsOut.empty()) {  // diamond_bounds.h: 8 bytes per grid point, beside a copy of the volume and its (zero)
-                               // gradients
+  if (bounds) {  // diamond_bounds.h: 8 bytes per grid point, beside a copy of the volume and its (zero) gradients
     const auto n = static_cast<std::uint64_t>(grid.pointsPerAxis());
     need += 16 * n * n * n + 5 * ref::sampleCount(dims);  // the bounds and their serialized copy
   }
   const std::string needText =
       o.inputs[0].string() + ": encoding needs " + std::to_string(need) + " bytes (" + dimsText(dims) +
       " samples in the " + std::to_string(grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(grid.k) +
-      ": the volume, its deltas, gradients and coded pages, and the " +
+      (bounds ? ": the volume, its deltas, gradients and coded pages, and the "
+              : ": the volume and its gradients mapped from files, a batch of pages, and the ") +
       std::to_string(ref::LebPadding::shellPoints(grid, dims)) + " padding points predictions reach" +
-      (o.boundsOut.empty() ? "" : "; and 16 bytes per grid point for the diamond bounds and their file") + ")";
+      (bounds ? "; and 16 bytes per grid point for the diamond bounds and their file" : "") + ")";
   refuseBeyondAddressSpace(need, needText);
-  ref::Volume<std::uint16_t> volume;
-  int bits = 8;
-  if (*type == io::VoxelType::UInt8) {
-    volume = ref::widenToU16(io::readRawVolumeU8(o.inputs[0], dims));
-  } else {
-    volume = io::readRawVolumeU16(o.inputs[0], dims);
-    bits = 16;
-  }
-  std::string stream;
+  const int bits = *type == io::VoxelType::UInt8 ? 8 : 16;
   const auto t0 = conf::Clock::now();
+  if (!bounds) {
+    try {
+      conf::Progress progress("voxref encode --codec leb", 1000);
+      io::encodeLebFile(o.inputs[0], dims, *type, o.out, options, io::kLebWindowBytes,
+                        [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); });
+      progress.finish();
+    } catch (const std::invalid_argument& e) {
+      throw conf::UsageError(e.what());
+    } catch (const std::bad_alloc&) {
+      throw io::IoError(needText + ": out of memory");
+    }
+    std::cout << "wrote " << o.out.string() << " in " << conf::secondsSince(t0) << " s\n";
+    printInfo(io::readLebFile(o.out), std::cout);
+    return 0;
+  }
+  ref::Volume<std::uint16_t> volume = *type == io::VoxelType::UInt8
+                                          ? ref::widenToU16(io::readRawVolumeU8(o.inputs[0], dims))
+                                          : io::readRawVolumeU16(o.inputs[0], dims);
+  std::string stream, boundsBytes;
   try {
     stream = ref::encodeLeb(volume, bits, options);
+    const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
+    boundsBytes = ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values()));
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
   } catch (const std::bad_alloc&) {
@@ -131,65 +152,37 @@ int encodeLebCommand(const EncodeOptions& o) {
   }
   const double seconds = conf::secondsSince(t0);
   // The stream and its bounds are written together: a failure leaves neither.
-  std::string bounds;
-  if (!o.boundsOut.empty()) {
-    try {
-      const ref::DenseGridField field(volume, std::vector<std::int8_t>(3 * volume.data().size(), 0));  // values only
-      bounds = ref::serializeDiamondBounds(ref::computeDiamondBounds(field.grid(), field.values()));
-    } catch (const std::bad_alloc&) {
-      throw io::IoError(needText + ": out of memory");
-    }
-  }
-  std::vector<io::FileContent> files{{o.out, stream}};
-  if (!o.boundsOut.empty()) files.push_back({o.boundsOut, bounds});
-  io::writeFilesAtomically(files);
+  io::writeFilesAtomically({{o.out, stream}, {o.boundsOut, boundsBytes}});
   std::cout << "wrote " << o.out.string() << " in " << seconds << " s\n";
-  if (!o.boundsOut.empty()) std::cout << "wrote the diamond bounds into " << o.boundsOut.string() << "\n";
+  std::cout << "wrote the diamond bounds into " << o.boundsOut.string() << "\n";
   printInfo(ref::parseLebStream(std::move(stream)), std::cout);
   return 0;
 }
 
 int decodeLebCommand(const DecodeOptions& o) {
   if (o.step) throw conf::UsageError("--step is for the timevarying codec");
-  const ref::LebStream s = io::readLebFile(o.input);
+  const io::LebFile file = io::openLebFile(o.input);
+  const ref::LebStream& s = file.stream;
   if (!o.gradientsOut.empty() && !s.channel(ref::LebChannelKind::Gradients))
     throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
-  // What decoding will allocate is known from the header (the samples, and the padding that
-  // predictions reach): refused here, before any of it is allocated, when it exceeds what this
-  // process may still map.
-  const std::uint64_t need =
-      ref::lebDecodeMemoryBytes(s) + ref::sampleCount(s.dims) * static_cast<std::uint64_t>(s.sampleBits / 8);
+  // What decoding will map and allocate is known from the header (the stream, the samples and
+  // their gradients, the padding that predictions reach): refused here, before any of it is
+  // mapped, when it exceeds what this process may still map.
+  const std::uint64_t need = io::lebFileDecodeAddressBytes(s);
   const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (" +
-                               dimsText(s.dims) + " samples and their gradients, twice, and the " +
+                               dimsText(s.dims) + " samples and their gradients mapped to files, the stream, and the " +
                                std::to_string(ref::LebPadding::shellPoints(s.grid, s.dims)) +
                                " padding points of the " + std::to_string(s.grid.pointsPerAxis()) +
                                "^3 grid of k = " + std::to_string(s.grid.k) + " that predictions reach)";
   refuseBeyondAddressSpace(need, needText);
-  ref::LebDecoded d;
   try {
-    d = ref::decodeLeb(s);
-  } catch (const ref::StreamError& e) {
-    throw io::FormatError(o.input.string() + ": " + e.what());
+    conf::Progress progress("voxref decode --codec leb", 1000);
+    io::decodeLebFile(file, o.out, o.gradientsOut, 0, io::kLebWindowBytes,
+                      [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); });
+    progress.finish();
   } catch (const std::bad_alloc&) {
     throw io::IoError(needText + ": out of memory");
   }
-  // Samples as stored: uint8, or uint16 little endian.
-  std::string raw;
-  if (s.sampleBits == 8) {
-    raw.assign(d.data.data().begin(), d.data.data().end());
-  } else {
-    raw.reserve(2 * d.data.data().size());
-    for (std::uint16_t v : d.data.data()) {
-      raw.push_back(static_cast<char>(v & 0xff));
-      raw.push_back(static_cast<char>(v >> 8));
-    }
-  }
-  // The volume and its gradients are written together: a failure leaves neither.
-  std::vector<io::FileContent> files{{o.out, raw}};
-  if (!o.gradientsOut.empty())
-    files.push_back(
-        {o.gradientsOut, std::string_view(reinterpret_cast<const char*>(d.gradients.data()), d.gradients.size())});
-  io::writeFilesAtomically(files);
   std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into "
             << o.out.string();
   if (!o.gradientsOut.empty()) std::cout << " and their gradients (3 int8 per sample) into " << o.gradientsOut.string();

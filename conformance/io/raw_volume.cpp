@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,9 +33,7 @@ void grow(std::vector<unsigned char>& bytes, std::size_t total, std::size_t limi
 // most 64 KiB or twice what the file holds, never the claimed size. A gzip stream must end with
 // its trailer (its CRC-32 and length checked by zlib); a file that stops before is truncated.
 std::vector<unsigned char> readBytes(const std::filesystem::path& path, std::size_t expected) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    fail(path, std::filesystem::exists(path, ec) ? "is not a regular file" : "does not exist");
+  requireVolumeFile(path);
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) throw IoError("cannot open volume file " + path.string() + ": " + std::strerror(errno));
   struct Closer {
@@ -118,6 +117,19 @@ std::vector<unsigned char> readBytes(const std::filesystem::path& path, std::siz
 }
 
 }  // namespace
+
+void requireVolumeFile(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    fail(path, std::filesystem::exists(path, ec) ? "is not a regular file" : "does not exist");
+}
+
+bool isGzipFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char magic[2] = {0, 0};
+  in.read(reinterpret_cast<char*>(magic), 2);
+  return in.gcount() == 2 && magic[0] == 0x1f && magic[1] == 0x8b;
+}
 
 std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims) {
   try {

@@ -30,6 +30,12 @@ std::optional<VoxelType> parseVoxelType(std::string_view s);
 // caller that must size its work before reading (voxref encode --codec leb) calls it itself.
 std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims);
 
+// Throws IoError "volume file <path> does not exist" or "... is not a regular file": the readers'
+// first check, and that of the LEB codec, which maps raw volumes (leb_file_codec.h).
+void requireVolumeFile(const std::filesystem::path& path);
+// Whether the file's first bytes are gzip's magic (1f 8b): the readers inflate such a file.
+bool isGzipFile(const std::filesystem::path& path);
+
 ref::Volume<std::uint8_t> readRawVolumeU8(const std::filesystem::path& path, const ref::Dims3& dims);
 ref::Volume<std::uint16_t> readRawVolumeU16(const std::filesystem::path& path, const ref::Dims3& dims);
 

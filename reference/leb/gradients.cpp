@@ -1,31 +1,45 @@
 #include "reference/leb/gradients.h"
 
-#include <cmath>
-
 namespace voxref::ref {
 
 std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& v) {
   const Dims3& d = v.dims();
   std::vector<std::int8_t> out(3 * v.data().size(), 0);
+  const std::size_t slice = 3 * static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]);
+  for (int z = 0; z < d[2]; ++z)
+    quantizedGradientSlice(v.data().data(), d, z, out.data() + slice * static_cast<std::size_t>(z));
+  return out;
+}
+
+std::vector<std::int8_t> diffusedQuantizedGradients(const Volume<std::uint16_t>& v, int iterations) {
+  const Dims3& d = v.dims();
+  const std::size_t n = v.data().size();
+  std::vector<std::array<double, 3>> g(n), next(n);
   std::size_t i = 0;
   for (int z = 0; z < d[2]; ++z)
     for (int y = 0; y < d[1]; ++y)
-      for (int x = 0; x < d[0]; ++x, ++i) {
-        const int p[3] = {x, y, z};
-        double g[3] = {0, 0, 0};
-        for (int a = 0; a < 3; ++a) {
-          if (d[a] < 2) continue;
-          int lo[3] = {x, y, z}, hi[3] = {x, y, z};
-          lo[a] = p[a] > 0 ? p[a] - 1 : p[a];
-          hi[a] = p[a] + 1 < d[a] ? p[a] + 1 : p[a];
-          g[a] = (static_cast<double>(v.at(hi[0], hi[1], hi[2])) - static_cast<double>(v.at(lo[0], lo[1], lo[2]))) /
-                 (hi[a] - lo[a]);
+      for (int x = 0; x < d[0]; ++x) g[i++] = centralGradient(v.data().data(), d, x, y, z);
+  const std::ptrdiff_t stride[3] = {1, d[0], static_cast<std::ptrdiff_t>(d[0]) * d[1]};
+  for (int it = 0; it < iterations; ++it) {
+    i = 0;
+    for (int z = 0; z < d[2]; ++z)
+      for (int y = 0; y < d[1]; ++y)
+        for (int x = 0; x < d[0]; ++x, ++i) {
+          const int p[3] = {x, y, z};
+          std::array<double, 3> flux{0, 0, 0};
+          for (int a = 0; a < 3; ++a)
+            for (const int step : {-1, 1}) {
+              if (p[a] + step < 0 || p[a] + step >= d[a]) continue;  // the face: no flux
+              const std::array<double, 3>& q =
+                  g[static_cast<std::size_t>(static_cast<std::ptrdiff_t>(i) + step * stride[a])];
+              for (std::size_t c = 0; c < 3; ++c) flux[c] += q[c] - g[i][c];
+            }
+          for (std::size_t c = 0; c < 3; ++c) next[i][c] = g[i][c] + flux[c] / 6.0;
         }
-        const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-        if (len == 0.0) continue;
-        for (int a = 0; a < 3; ++a)
-          out[3 * i + static_cast<std::size_t>(a)] = static_cast<std::int8_t>(std::lround(127.0 * g[a] / len));
-      }
+    g.swap(next);
+  }
+  std::vector<std::int8_t> out(3 * n);
+  for (i = 0; i < n; ++i) quantizeGradient(g[i], out.data() + 3 * i);
   return out;
 }
 

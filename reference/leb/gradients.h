@@ -9,6 +9,8 @@
 // from zero). The paper smooths the float gradients by diffusion first; voxref does not.
 #pragma once
 
+#include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -18,5 +20,52 @@ namespace voxref::ref {
 
 // Three int8 per sample, (gx, gy, gz), in the order of the volume's samples.
 std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& volume);
+
+// The central-difference gradient of the sample at (x, y, z) (one-sided on the faces, 0 along an
+// axis of extent 1), in sample units per sample spacing, of samples of extents d at `samples`.
+template <class T>
+std::array<double, 3> centralGradient(const T* samples, const Dims3& d, int x, int y, int z) {
+  const auto at = [&](const int q[3]) {
+    return static_cast<double>(samples[static_cast<std::size_t>(q[0]) +
+                                       static_cast<std::size_t>(d[0]) *
+                                           (static_cast<std::size_t>(q[1]) + static_cast<std::size_t>(d[1]) * q[2])]);
+  };
+  const int p[3] = {x, y, z};
+  std::array<double, 3> g{0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    if (d[a] < 2) continue;
+    int lo[3] = {x, y, z}, hi[3] = {x, y, z};
+    lo[a] = p[a] > 0 ? p[a] - 1 : p[a];
+    hi[a] = p[a] + 1 < d[a] ? p[a] + 1 : p[a];
+    g[static_cast<std::size_t>(a)] = (at(hi) - at(lo)) / (hi[a] - lo[a]);
+  }
+  return g;
+}
+
+// g / |g| as snorm8, round(127 c) per component, into out[0..2]; (0, 0, 0) for a zero gradient.
+inline void quantizeGradient(const std::array<double, 3>& g, std::int8_t* out) {
+  const double len = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  for (std::size_t a = 0; a < 3; ++a)
+    out[a] = len == 0.0 ? 0 : static_cast<std::int8_t>(std::lround(127.0 * g[a] / len));
+}
+
+// The same for slice z alone (3 int8 per sample of the slice into out, x fastest), of samples of
+// extents d at `samples` (x fastest): it reads slices z - 1 .. z + 1 only, so a file's gradients
+// are made slice by slice (quantizedGradients is this for every z).
+template <class T>
+void quantizedGradientSlice(const T* samples, const Dims3& d, int z, std::int8_t* out) {
+  std::size_t i = 0;
+  for (int y = 0; y < d[1]; ++y)
+    for (int x = 0; x < d[0]; ++x, ++i) quantizeGradient(centralGradient(samples, d, x, y, z), out + 3 * i);
+}
+
+// The paper's Table 1 conditions (section 4: "the raw floating point gradients are run through a
+// diffusion based smoothing process to ensure that there are no degenerate gradients"): the
+// central-difference gradients, then `iterations` steps of explicit diffusion of each component,
+// g <- g + (1/6) sum over the 6 axis neighbours of (g_n - g), a neighbour past a face counting as
+// g itself (no flux through the faces; 1/6 is the largest stable step in 3D), then quantized as
+// above. The paper gives neither the scheme nor its length; voxref's choice is this one, stated
+// wherever its figures appear. Computed in double, in a fixed order: deterministic.
+std::vector<std::int8_t> diffusedQuantizedGradients(const Volume<std::uint16_t>& volume, int iterations);
 
 }  // namespace voxref::ref

@@ -16,7 +16,9 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "reference/common/volume.h"
@@ -24,22 +26,56 @@
 
 namespace voxref::ref {
 
+// Called between batches of pages, on the calling thread, while no worker runs, with the fraction
+// of the work done so far (0..1, rising): a caller whose volume lies in file mappings trims them
+// there (conformance/io/leb_file_codec.h), which bounds its resident memory by what one batch
+// touches, and may show progress. The batches do not change any result.
+using LebWindow = std::function<void(double done)>;
+
 struct LebEncodeOptions {
   int pageBits = 12;      // the paper's k = 12: 4096 points per page
   bool gradients = true;  // add the gradients channel
   int threads = 0;        // 0: all cores
+  LebWindow window;       // optional
 };
+
+// A volume where the codec reads it (encoding) or writes it (decoding), x fastest: the samples at 8
+// bits (data8) or at 16 (data16), exactly one of them, and the gradients, 3 int8 per sample
+// (quantizedGradients), when the stream has that channel.
+template <class Byte, class Word, class Signed>
+struct LebVolumeSpan {
+  Dims3 dims{0, 0, 0};
+  int sampleBits = 8;
+  Byte* data8 = nullptr;
+  Word* data16 = nullptr;
+  Signed* gradients = nullptr;
+};
+using LebVolumeIn = LebVolumeSpan<const std::uint8_t, const std::uint16_t, const std::int8_t>;
+using LebVolumeOut = LebVolumeSpan<std::uint8_t, std::uint16_t, std::int8_t>;
+
+// Receives the stream being made: its `bytes` at `offset`. Each byte is written once; the
+// payload in order, each channel's descriptor after its pages, the header last.
+using LebStreamWrite = std::function<void(std::uint64_t offset, std::string_view bytes)>;
 
 // Throws std::invalid_argument for sampleBits other than 8 or 16, a sample >= 2^sampleBits, page
 // bits outside [kMinLebPageBits, kMaxLebPageBits] or a volume larger than the largest grid.
 //
 // Memory: at most lebEncodeMemoryBytes(dims, options) beside the volume itself: the gradients (3
-// bytes per sample), the shell of padding that predictions reach (leb_padding.h), one run of 64
-// pages of deltas per thread (the encoder makes two passes: the counts for the code, then the
-// deltas again, each page coded as it is predicted), the coded pages and the stream. Nothing is
+// bytes per sample), the stream, and what encodeLebTo needs (below: the shell of padding that
+// predictions reach, leb_padding.h, and one batch of runs in flight; the encoder makes two passes,
+// the counts for the code, then the deltas again, each page coded as it is predicted). Nothing is
 // proportional to the grid: pages of padding alone are neither walked nor stored, so a 1025x1x1
 // volume costs what its samples cost (FORMAT.md, "Stored pages").
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& options = {});
+// The same stream, handed to `write` as it is made (encodeLeb is this with a string for the
+// stream): the streaming encoder of files. Returns the stream's size. Throws as encodeLeb does, and
+// std::invalid_argument when the span lacks the samples or, with options.gradients, the gradients.
+// Memory beside the span: the shell of padding, one batch of runs of 64 pages of deltas and of
+// coded pages per thread, and the page table (12 bytes per stored page); nothing proportional to
+// the volume.
+std::uint64_t encodeLebTo(const LebVolumeIn& volume, const LebEncodeOptions& options, const LebStreamWrite& write);
+// The memory above, from the extents alone (nothing is allocated).
+std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& options = {});
 // The bound above, from the extents alone (nothing is allocated). Throws std::invalid_argument as
 // encodeLeb does for extents larger than the largest grid.
 std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& options = {});
@@ -59,6 +95,12 @@ struct LebDecoded {
 LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
 // The bound above, from the header alone (nothing is allocated).
 std::uint64_t lebDecodeMemoryBytes(const LebStream& stream);
+// Decodes into `out` (decodeLeb is this with a volume of its own): out.dims and sampleBits must be
+// the stream's, data8 set for 8-bit samples and data16 for 16, gradients set exactly when the
+// stream has them (std::invalid_argument otherwise). window, if set, is called between batches.
+// Memory beside `out`: the shell of padding, one channel at a time, and one small reader per open
+// page.
+void decodeLebInto(const LebStream& stream, const LebVolumeOut& out, int threads = 0, const LebWindow& window = {});
 
 // The deltas the encoder codes for one channel, in stream order (points inside the volume only):
 // what the benchmarks hand to a general-purpose coder to separate the predictor from the coder.

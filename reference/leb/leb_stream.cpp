@@ -18,7 +18,7 @@ std::ptrdiff_t LebChannel::slotOf(std::uint64_t page) const {
 
 std::string_view LebStream::page(const LebChannel& c, std::size_t slot) const {
   const std::uint64_t begin = c.pageOffset[slot], end = c.pageOffset[slot + 1];
-  return std::string_view(bytes).substr(c.payloadOffset + begin, end - begin);
+  return bytes.substr(c.payloadOffset + begin, end - begin);
 }
 
 const LebChannel* LebStream::channel(LebChannelKind kind) const {
@@ -27,9 +27,15 @@ const LebChannel* LebStream::channel(LebChannelKind kind) const {
   return nullptr;
 }
 
-std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits,
-                               const std::vector<LebChannelPayload>& channels) {
-  // FORMAT.md section 1: the header; the total size is patched in at the end.
+std::uint64_t LebChannelTable::payloadBytes() const {
+  std::uint64_t n = 0;
+  for (const std::uint32_t len : pageLength) n += len;
+  return n;
+}
+
+std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
+                           std::uint64_t totalBytes) {
+  // FORMAT.md section 1.
   ByteWriter w;
   w.bytes("VXLB", 4);
   w.le<std::uint16_t>(kLebVersion);
@@ -37,44 +43,46 @@ std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid&
   w.le<std::uint8_t>(static_cast<std::uint8_t>(grid.k));
   for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(dims[a]));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(pageBits));
-  w.le<std::uint8_t>(static_cast<std::uint8_t>(channels.size()));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(channelCount));
   w.le<std::uint16_t>(0);
-  w.le<std::uint64_t>(0);  // total bytes, patched below
-  w.le<std::uint32_t>(0);  // header CRC, patched below
-  const std::uint64_t pages = lebPageCount(grid, pageBits);
-  // Section 2: per channel, a descriptor and the pages.
-  for (const LebChannelPayload& c : channels) {
-    if (c.pages.size() != c.storedPage.size() || c.pages.empty() ||
-        !std::is_sorted(c.storedPage.begin(), c.storedPage.end(), std::less_equal<>()) || c.storedPage.back() >= pages)
-      throw std::invalid_argument("a channel stores one page per ascending page index below " + std::to_string(pages));
-    const std::size_t start = w.size();
-    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.kind));
-    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.components));
-    w.le<std::uint8_t>(static_cast<std::uint8_t>(c.valueBits));
-    w.le<std::uint8_t>(c.isSigned ? 1 : 0);
-    w.le<std::uint32_t>(static_cast<std::uint32_t>(pages));
-    w.le<std::uint32_t>(static_cast<std::uint32_t>(c.storedPage.size()));
-    std::uint64_t payload = 0;
-    for (const std::string& p : c.pages) payload += p.size();
-    w.le<std::uint64_t>(payload);
-    w.bytes(c.code.lengths.data(), c.code.lengths.size());
-    for (const std::uint32_t p : c.storedPage) w.le<std::uint32_t>(p);
-    for (const std::string& p : c.pages) w.le<std::uint32_t>(static_cast<std::uint32_t>(p.size()));
-    for (const std::string& p : c.pages) w.le<std::uint32_t>(crc32(p));
-    w.le<std::uint32_t>(crc32(std::string_view(w.str()).substr(start)));
-    for (const std::string& p : c.pages) w.bytes(p);
-  }
-  std::string& s = w.str();
-  const std::uint64_t total = s.size();
-  for (int i = 0; i < 8; ++i) s[24 + static_cast<std::size_t>(i)] = static_cast<char>((total >> (8 * i)) & 0xff);
-  const std::uint32_t hc = crc32(std::string_view(s).substr(0, 32));
-  for (int i = 0; i < 4; ++i) s[32 + static_cast<std::size_t>(i)] = static_cast<char>((hc >> (8 * i)) & 0xff);
-  return std::move(s);
+  w.le<std::uint64_t>(totalBytes);
+  w.le<std::uint32_t>(crc32(w.str()));
+  return std::move(w.str());
+}
+
+std::string lebDescriptorBytes(std::uint64_t pages, const LebChannelTable& c) {
+  // FORMAT.md section 2, "Descriptor".
+  const std::size_t n = c.storedPage.size();
+  if (n == 0 || c.pageLength.size() != n || c.pageCrc.size() != n ||
+      !std::is_sorted(c.storedPage.begin(), c.storedPage.end(), std::less_equal<>()) || c.storedPage.back() >= pages)
+    throw std::invalid_argument("a channel stores one length and CRC per ascending page index below " +
+                                std::to_string(pages));
+  ByteWriter w;
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(c.kind));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(c.components));
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(c.valueBits));
+  w.le<std::uint8_t>(c.isSigned ? 1 : 0);
+  w.le<std::uint32_t>(static_cast<std::uint32_t>(pages));
+  w.le<std::uint32_t>(static_cast<std::uint32_t>(n));
+  w.le<std::uint64_t>(c.payloadBytes());
+  w.bytes(c.code.lengths.data(), c.code.lengths.size());
+  for (const std::uint32_t p : c.storedPage) w.le<std::uint32_t>(p);
+  for (const std::uint32_t len : c.pageLength) w.le<std::uint32_t>(len);
+  for (const std::uint32_t crc : c.pageCrc) w.le<std::uint32_t>(crc);
+  w.le<std::uint32_t>(crc32(w.str()));
+  return std::move(w.str());
 }
 
 LebStream parseLebStream(std::string bytes) {
+  auto owner = std::make_shared<const std::string>(std::move(bytes));
+  const std::string_view view = *owner;
+  return parseLebStream(view, std::move(owner));
+}
+
+LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> owner) {
   LebStream s;
-  s.bytes = std::move(bytes);
+  s.bytes = bytes;
+  s.owner = std::move(owner);
   const std::string_view b = s.bytes;
   ByteReader r(b);
   // Section 1: header.

@@ -48,7 +48,10 @@ struct LebChannel {
 };
 
 struct LebStream {
-  std::string bytes;    // the whole stream
+  // The whole stream: `owner` keeps its bytes alive (a string that parseLebStream took, or a file
+  // mapping of the caller's), `bytes` views them.
+  std::string_view bytes;
+  std::shared_ptr<const void> owner;
   Dims3 dims{0, 0, 0};  // the original volume; the grid covers it (padding beyond)
   int sampleBits = 8;
   LebGrid grid;
@@ -69,19 +72,31 @@ inline std::uint64_t lebPageCount(const LebGrid& grid, int pageBits) {
   return (grid.pointCount() + (std::uint64_t{1} << pageBits) - 1) >> pageBits;
 }
 
-// The pieces the encoder hands over; serializeLebStream lays them out (and computes every CRC).
-struct LebChannelPayload {
-  LebChannelKind kind;
-  int components, valueBits;
-  bool isSigned;
+// One channel's descriptor as the encoder fills it (FORMAT.md, "Descriptor"): what it is, its code,
+// and per stored page (ascending: the pages that hold a point of the volume) its length and CRC-32.
+struct LebChannelTable {
+  LebChannelKind kind = LebChannelKind::Data;
+  int components = 1, valueBits = 8;
+  bool isSigned = false;
   Lead1Code code;
-  std::vector<std::uint32_t> storedPage;  // ascending: the pages that hold a point of the volume
-  std::vector<std::string> pages;         // one per stored page
+  std::vector<std::uint32_t> storedPage, pageLength, pageCrc;
+  std::uint64_t payloadBytes() const;
 };
-std::string serializeLebStream(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits,
-                               const std::vector<LebChannelPayload>& channels);
+// The header (section 1) of a stream of `totalBytes` bytes with `channelCount` channels.
+std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
+                           std::uint64_t totalBytes);
+// The descriptor of a channel (section 2) among `pageCount` pages, with its CRC-32; exactly
+// lebDescriptorSize(valueBits, storedPage.size()) bytes. Throws std::invalid_argument for a table
+// whose stored pages are not ascending below pageCount, or whose columns differ in length.
+std::string lebDescriptorBytes(std::uint64_t pageCount, const LebChannelTable& table);
+inline std::size_t lebDescriptorSize(int valueBits, std::size_t storedPages) {
+  const auto symbols = static_cast<std::size_t>(valueBits + 1);
+  return 20 + symbols * symbols + 12 * storedPages + 4;
+}
 
 // Throws StreamError. Takes the bytes by value: the stream keeps them.
 LebStream parseLebStream(std::string bytes);
+// The same over bytes that `owner` keeps alive (a file mapping): nothing is copied.
+LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> owner);
 
 }  // namespace voxref::ref

@@ -6,7 +6,7 @@
 # tests/CMakeLists.txt (voxref_expect, test_out, voxref_bin).
 set(fault_dir "${test_out}/faults")
 add_test(NAME fault.clean COMMAND ${CMAKE_COMMAND} -E rm -rf "${fault_dir}")
-add_test(NAME fault.mkdir COMMAND ${CMAKE_COMMAND} -E make_directory "${fault_dir}/stream")
+add_test(NAME fault.mkdir COMMAND ${CMAKE_COMMAND} -E make_directory "${fault_dir}/stream" "${fault_dir}/leb")
 set_tests_properties(fault.clean PROPERTIES FIXTURES_SETUP fault_clean LABELS "fault;sanitize")
 set_tests_properties(fault.mkdir PROPERTIES FIXTURES_SETUP fault_mkdir FIXTURES_REQUIRED fault_clean LABELS "fault;sanitize")
 
@@ -42,6 +42,20 @@ voxref_fault(fault.disk_full.fixtures
 voxref_fault(fault.disk_full.stream
   COMMAND "${voxref_bin}|encode|--codec|timevarying|--plume|--side|32|--steps|4|--out|${fault_dir}/stream/plume.vxtv"
   DIR "${fault_dir}/stream" FSIZE 1 EXPECT "plume.vxtv[^\n]*: File too large" NEEDS fault_stream)
+# ... while the LEB codec streams between files (conformance/io/leb_file_codec.h): the encoder's
+# gradients file and the decoder's outputs are allocated before they are written through their
+# mappings, so the limit is met there, as an error, never as a fault in the middle of the mapping.
+# The volume is the bad-input catalogue's good one (32x32x16 uint8).
+set(fault_leb_volume "${good}/steps/step_000.rgba")
+voxref_expect(fault.setup.leb
+  COMMAND "${voxref_bin}|encode|--codec|leb|--input|${fault_leb_volume}|--dims|32|32|16|--out|${fault_dir}/leb/volume.vxleb"
+  EXIT 0 SETS fault_leb NEEDS "fault_mkdir;bi_volume" LABELS "fault;sanitize")
+voxref_fault(fault.disk_full.leb_encode
+  COMMAND "${voxref_bin}|encode|--codec|leb|--input|${fault_leb_volume}|--dims|32|32|16|--out|${fault_dir}/leb/volume.vxleb"
+  DIR "${fault_dir}/leb" FSIZE 1 EXPECT "cannot write [^\n]*volume[^\n]*: File too large" NEEDS fault_leb)
+voxref_fault(fault.disk_full.leb_decode
+  COMMAND "${voxref_bin}|decode|--codec|leb|--input|${fault_dir}/leb/volume.vxleb|--out|${fault_dir}/leb/volume.raw|--gradients-out|${fault_dir}/leb/volume.grad"
+  DIR "${fault_dir}/leb" FSIZE 1 EXPECT "cannot write [^\n]*volume[^\n]*: File too large" NEEDS fault_leb)
 # No GL library: libOSMesa is loaded at run time, so the error is voxref's, naming the library.
 voxref_fault(fault.gl_library_missing
   COMMAND "${voxref_bin}|conform|--filter|sparsegrid.hard.level1|--out|${fault_dir}/report"

@@ -49,6 +49,55 @@ void expectRoundTrip(const Volume<std::uint16_t>& v, int bits, int pageBits, con
   EXPECT_EQ(st.streamBytes, s.bytes.size());
 }
 
+// encodeLebTo's contract (leb_codec.h): every byte of the stream written exactly once, the pages
+// in order, each descriptor after its pages, the header last; the same bytes as encodeLeb, for
+// 8-bit samples given at 8 bits or widened to 16, and any gradients the caller gives round-trip.
+TEST(LebCodec, TheStreamingEncoderWritesEachByteOnceInTheDocumentedOrder) {
+  const Volume<std::uint16_t> v = smooth({37, 21, 13}, 8);
+  const std::vector<std::uint8_t> narrow(v.data().begin(), v.data().end());
+  const std::vector<std::int8_t> g = quantizedGradients(v);
+  LebEncodeOptions o;
+  o.pageBits = 6;
+  int windows = 0;
+  double last = 0.0;
+  o.window = [&](double done) {
+    ++windows;
+    EXPECT_GE(done, last);  // the fraction of the work rises to 1
+    EXPECT_LE(done, 1.0 + 1e-12);
+    last = done;
+  };
+  std::vector<std::pair<std::uint64_t, std::string>> writes;
+  const std::uint64_t total =
+      encodeLebTo(LebVolumeIn{v.dims(), 8, narrow.data(), nullptr, g.data()}, o,
+                  [&](std::uint64_t at, std::string_view b) { writes.emplace_back(at, std::string(b)); });
+  EXPECT_GT(windows, 0);
+  EXPECT_NEAR(last, 1.0, 1e-12);
+  ASSERT_FALSE(writes.empty());
+  EXPECT_EQ(writes.back().first, 0u);  // the header, last
+  EXPECT_EQ(writes.back().second.size(), kLebHeaderBytes);
+  std::string stream(total, '\0');
+  std::vector<int> times(total, 0);
+  for (const auto& [at, b] : writes) {
+    ASSERT_LE(at + b.size(), total);
+    stream.replace(at, b.size(), b);
+    for (std::size_t i = 0; i < b.size(); ++i) ++times[at + i];
+  }
+  EXPECT_TRUE(std::all_of(times.begin(), times.end(), [](int n) { return n == 1; }));
+  o.window = {};
+  EXPECT_EQ(stream, encodeLeb(v, 8, o));
+  // Gradients of the caller's own (here reversed) are what the stream holds.
+  const std::vector<std::int8_t> mine(g.rbegin(), g.rend());
+  std::string other;
+  encodeLebTo(LebVolumeIn{v.dims(), 8, narrow.data(), nullptr, mine.data()}, o,
+              [&](std::uint64_t at, std::string_view b) {
+                if (at + b.size() > other.size()) other.resize(at + b.size());
+                b.copy(other.data() + at, b.size());
+              });
+  EXPECT_EQ(decodeLeb(parseLebStream(other)).gradients, mine);
+  EXPECT_THROW(encodeLebTo(LebVolumeIn{v.dims(), 16, narrow.data(), nullptr, g.data()}, o, {}), std::invalid_argument);
+  EXPECT_THROW(encodeLebTo(LebVolumeIn{v.dims(), 8, narrow.data(), nullptr, nullptr}, o, {}), std::invalid_argument);
+}
+
 TEST(LebCodec, RoundTripOfTheEdgeCases) {
   for (int pageBits : {4, 12}) {
     expectRoundTrip(Volume<std::uint16_t>({17, 17, 17}, 77), 8, pageBits, "constant");
@@ -349,7 +398,7 @@ TEST(LebEncodeMemory, TheBoundFollowsTheVolume) {
   EXPECT_LT(lebEncodeMemoryBytes({1025, 1, 1}), std::uint64_t{4} << 20);
   EXPECT_GE(lebEncodeMemoryBytes({1025, 1, 1}), 16u * 1025 + 3 * 1025);  // deltas of both channels, gradients
   EXPECT_GE(lebEncodeMemoryBytes({256, 256, 128}, dataOnly), 8ull * 256 * 256 * 128);  // deltas, then the stream
-  EXPECT_THROW(lebEncodeMemoryBytes({9, 9, 9}, LebEncodeOptions{30, true, 0}), std::invalid_argument);  // page bits
+  EXPECT_THROW(lebEncodeMemoryBytes({9, 9, 9}, LebEncodeOptions{30, true, 0, {}}), std::invalid_argument);  // page bits
   EXPECT_THROW(lebEncodeMemoryBytes({0, 9, 9}), std::invalid_argument);
 }
 

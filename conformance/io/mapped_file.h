@@ -1,0 +1,69 @@
+// Files mapped into memory, for codecs that stream volumes larger than the memory they may use
+// (leb_file_codec.h): a mapping's resident pages can be dropped at any time (trim), so the
+// process holds only what it touched since, while the kernel keeps the file in its page cache.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string_view>
+#include <vector>
+
+namespace voxref::io {
+
+class MappedFile {
+ public:
+  // The whole of a regular file, read-only. Throws IoError "<path> does not exist", "<path> is not
+  // a regular file" or "cannot open <path>: <reason>". An empty file maps to no bytes.
+  static MappedFile openRead(const std::filesystem::path& path);
+  // A new file of `size` bytes, read-write and shared (what is written reaches the file). Its
+  // blocks are allocated first (posix_fallocate), so a full disk or a file-size limit is an
+  // IoError "cannot write <named>: <reason>" here, never a fault while writing through the mapping;
+  // `named` is what the file is for (the destination of a temporary), `path` by default.
+  static MappedFile create(const std::filesystem::path& path, std::uint64_t size,
+                           const std::filesystem::path& named = {});
+
+  MappedFile(MappedFile&& other) noexcept;
+  MappedFile& operator=(MappedFile&& other) noexcept;
+  MappedFile(const MappedFile&) = delete;
+  MappedFile& operator=(const MappedFile&) = delete;
+  ~MappedFile();
+
+  const std::uint8_t* data() const { return data_; }
+  std::uint8_t* data() { return data_; }
+  std::uint64_t size() const { return size_; }
+  const std::filesystem::path& path() const { return path_; }
+  std::string_view bytes() const { return {reinterpret_cast<const char*>(data_), static_cast<std::size_t>(size_)}; }
+
+  // Drops the mapping's resident pages (madvise MADV_DONTNEED). Nothing is lost: a read-only
+  // mapping reads the file again, a shared one has handed its writes to the page cache.
+  void trim();
+  // Writes a shared mapping's pages to the file (msync); throws IoError naming it.
+  void flush();
+
+ private:
+  MappedFile() = default;
+  std::filesystem::path path_;
+  std::uint8_t* data_ = nullptr;
+  std::uint64_t size_ = 0;
+  bool writable_ = false;
+};
+
+// This process's resident memory now (/proc/self/statm), in bytes.
+std::uint64_t residentBytes();
+
+// The working window of a streaming codec: call it between batches of work; whenever the
+// process's resident memory exceeds `budget` bytes it trims every mapping it watches.
+class ResidentWindow {
+ public:
+  ResidentWindow(std::uint64_t budget, std::vector<MappedFile*> mappings)
+      : budget_(budget), mappings_(std::move(mappings)) {}
+  void operator()();
+  int trims() const { return trims_; }
+
+ private:
+  std::uint64_t budget_;
+  std::vector<MappedFile*> mappings_;
+  int trims_ = 0;
+};
+
+}  // namespace voxref::io

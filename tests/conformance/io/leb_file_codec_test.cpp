@@ -1,0 +1,100 @@
+#include "conformance/io/leb_file_codec.h"
+
+#include <fstream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "conformance/io/atomic_file.h"
+#include "reference/leb/gradients.h"
+
+namespace voxref::io {
+namespace {
+
+std::filesystem::path codecScratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "voxref-leb-file-codec-test";
+  std::filesystem::create_directories(dir);
+  return dir / name;
+}
+
+// A smooth field plus noise of `bits` bits, and its raw file (uint16 little endian).
+ref::Volume<std::uint16_t> volumeOf(const ref::Dims3& d, int bits, const std::filesystem::path& raw) {
+  std::mt19937 rng(7);
+  ref::Volume<std::uint16_t> v(d);
+  const double top = bits == 8 ? 255.0 : 65535.0;
+  std::string bytes;
+  for (std::size_t i = 0; i < v.data().size(); ++i) {
+    const double f = 0.5 * top * (1.0 + std::sin(0.21 * static_cast<double>(i % 97) + 0.013 * static_cast<double>(i)));
+    v.data()[i] = static_cast<std::uint16_t>(std::clamp(f + static_cast<double>(rng() % 7) - 3.0, 0.0, top));
+    bytes.push_back(static_cast<char>(v.data()[i] & 0xff));
+    if (bits == 16) bytes.push_back(static_cast<char>(v.data()[i] >> 8));
+  }
+  writeFileAtomically(raw, bytes);
+  return v;
+}
+
+// Volumes that fill their grid and that do not (padding on every axis), at 8 and 16 bits; the
+// streaming encoder must write the very stream encodeLeb makes in memory, under any window.
+struct Case {
+  ref::Dims3 dims;
+  int bits;
+};
+class LebFileCodec : public ::testing::TestWithParam<Case> {};
+
+TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
+  const Case c = GetParam();
+  const std::string name = ref::dimsText(c.dims) + "_" + std::to_string(c.bits);
+  const auto raw = codecScratch(name + ".raw"), stream = codecScratch(name + ".vxleb"),
+             back = codecScratch(name + ".back.raw"), grads = codecScratch(name + ".grad");
+  const ref::Volume<std::uint16_t> v = volumeOf(c.dims, c.bits, raw);
+  const VoxelType type = c.bits == 8 ? VoxelType::UInt8 : VoxelType::UInt16;
+  const std::string expected = ref::encodeLeb(v, c.bits);
+  for (const std::uint64_t window : {kLebWindowBytes, std::uint64_t{1}}) {  // a window of one byte trims every batch
+    SCOPED_TRACE(window);
+    const LebFileRun enc = encodeLebFile(raw, c.dims, type, stream, ref::LebEncodeOptions{}, window);
+    EXPECT_EQ(readWholeFile(stream), expected);
+    EXPECT_EQ(enc.streamBytes, expected.size());
+    EXPECT_EQ(enc.trims > 0, window == 1);
+    const LebFileRun dec = decodeLebFile(openLebFile(stream), back, grads, 0, window);
+    EXPECT_EQ(readWholeFile(back), readWholeFile(raw));
+    const std::vector<std::int8_t> g = ref::quantizedGradients(v);
+    EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
+    EXPECT_EQ(dec.trims > 0, window == 1);
+  }
+  for (const auto& p : std::filesystem::directory_iterator(raw.parent_path()))
+    EXPECT_EQ(p.path().filename().string().find(".tmp"), std::string::npos) << p.path() << " was left behind";
+}
+
+INSTANTIATE_TEST_SUITE_P(Volumes, LebFileCodec,
+                         ::testing::Values(Case{{33, 33, 33}, 8}, Case{{37, 21, 13}, 8}, Case{{20, 9, 17}, 16},
+                                           Case{{1025, 1, 1}, 8}));
+
+TEST(LebFileCodecErrors, NameTheFileAndLeaveNothing) {
+  const auto raw = codecScratch("err.raw"), stream = codecScratch("err.vxleb");
+  volumeOf({16, 16, 16}, 8, raw);
+  std::filesystem::remove(stream);
+  try {
+    encodeLebFile(raw, {16, 16, 17}, VoxelType::UInt8, stream, {});
+    ADD_FAILURE() << "a file of the wrong size was encoded";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("holds 4096 bytes; the dimensions need 4352"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(std::filesystem::exists(stream));
+  ref::LebEncodeOptions dataOnly;
+  dataOnly.gradients = false;
+  encodeLebFile(raw, {16, 16, 16}, VoxelType::UInt8, stream, dataOnly);
+  EXPECT_THROW(decodeLebFile(openLebFile(stream), codecScratch("err.back"), codecScratch("err.grad")),
+               std::invalid_argument);
+  encodeLebFile(raw, {16, 16, 16}, VoxelType::UInt8, stream, {});
+  bool refused = false;
+  try {
+    decodeLebFile(openLebFile(stream), codecScratch("same"), codecScratch("same"));
+  } catch (const IoError& e) {
+    refused = std::string(e.what()).find("two outputs name the same file") != std::string::npos;
+  }
+  EXPECT_TRUE(refused);
+  EXPECT_FALSE(std::filesystem::exists(codecScratch("err.back")));
+}
+
+}  // namespace
+}  // namespace voxref::io
