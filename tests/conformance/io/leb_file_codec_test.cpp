@@ -11,10 +11,12 @@
 namespace voxref::io {
 namespace {
 
-std::filesystem::path codecScratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "voxref-leb-file-codec-test";
+// A folder of each test's own (ctest runs the cases side by side), emptied first.
+std::filesystem::path codecFolder(const std::string& test) {
+  const auto dir = std::filesystem::temp_directory_path() / "voxref-leb-file-codec-test" / test;
+  std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  return dir / name;
+  return dir;
 }
 
 // A smooth field plus noise of `bits` bits, and its raw file (uint16 little endian).
@@ -44,8 +46,9 @@ class LebFileCodec : public ::testing::TestWithParam<Case> {};
 TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
   const Case c = GetParam();
   const std::string name = ref::dimsText(c.dims) + "_" + std::to_string(c.bits);
-  const auto raw = codecScratch(name + ".raw"), stream = codecScratch(name + ".vxleb"),
-             back = codecScratch(name + ".back.raw"), grads = codecScratch(name + ".grad");
+  const auto dir = codecFolder(name);
+  const auto raw = dir / (name + ".raw"), stream = dir / (name + ".vxleb"), back = dir / (name + ".back.raw"),
+             grads = dir / (name + ".grad");
   const ref::Volume<std::uint16_t> v = volumeOf(c.dims, c.bits, raw);
   const VoxelType type = c.bits == 8 ? VoxelType::UInt8 : VoxelType::UInt16;
   const std::string expected = ref::encodeLeb(v, c.bits);
@@ -70,7 +73,8 @@ INSTANTIATE_TEST_SUITE_P(Volumes, LebFileCodec,
                                            Case{{1025, 1, 1}, 8}));
 
 TEST(LebFileCodecErrors, NameTheFileAndLeaveNothing) {
-  const auto raw = codecScratch("err.raw"), stream = codecScratch("err.vxleb");
+  const auto dir = codecFolder("errors");
+  const auto raw = dir / "err.raw", stream = dir / "err.vxleb";
   volumeOf({16, 16, 16}, 8, raw);
   std::filesystem::remove(stream);
   try {
@@ -83,17 +87,16 @@ TEST(LebFileCodecErrors, NameTheFileAndLeaveNothing) {
   ref::LebEncodeOptions dataOnly;
   dataOnly.gradients = false;
   encodeLebFile(raw, {16, 16, 16}, VoxelType::UInt8, stream, dataOnly);
-  EXPECT_THROW(decodeLebFile(openLebFile(stream), codecScratch("err.back"), codecScratch("err.grad")),
-               std::invalid_argument);
+  EXPECT_THROW(decodeLebFile(openLebFile(stream), dir / "err.back", dir / "err.grad"), std::invalid_argument);
   encodeLebFile(raw, {16, 16, 16}, VoxelType::UInt8, stream, {});
   bool refused = false;
   try {
-    decodeLebFile(openLebFile(stream), codecScratch("same"), codecScratch("same"));
+    decodeLebFile(openLebFile(stream), dir / "same", dir / "same");
   } catch (const IoError& e) {
     refused = std::string(e.what()).find("two outputs name the same file") != std::string::npos;
   }
   EXPECT_TRUE(refused);
-  EXPECT_FALSE(std::filesystem::exists(codecScratch("err.back")));
+  EXPECT_FALSE(std::filesystem::exists(dir / "err.back"));
 }
 
 }  // namespace
