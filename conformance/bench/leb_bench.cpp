@@ -189,14 +189,10 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
     // (gradients.h, diffusedQuantizedGradients), each stream decoded and checked bit for bit.
     for (const int steps : {2, 8}) {
       const std::vector<std::int8_t> g = ref::diffusedQuantizedGradients(d.volume, steps);
-      std::string bytes;
       ref::LebEncodeOptions options;
       options.threads = o.threads;
-      const ref::LebVolumeIn in{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), g.data()};
-      ref::encodeLebTo(in, options, [&](std::uint64_t at, std::string_view b) {
-        if (at + b.size() > bytes.size()) bytes.resize(at + b.size());
-        b.copy(bytes.data() + at, b.size());
-      });
+      std::string bytes =
+          ref::encodeLeb(ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), g.data()}, options);
       const ref::LebStream s = ref::parseLebStream(std::move(bytes));
       const ref::LebDecoded back = ref::decodeLeb(s, o.threads);
       if (back.data.data() != d.volume.data() || back.gradients != g)

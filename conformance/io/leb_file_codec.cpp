@@ -69,10 +69,7 @@ InputSamples inputSamples(const std::filesystem::path& input, const ref::Dims3& 
     return in;
   }
   in.mapped = MappedFile::openRead(input);  // a regular file, checked above
-  const std::uint64_t size = in.mapped->size();
-  if (size != need)
-    throw IoError("volume file " + input.string() + " holds " + (size > need ? "more than " : "") +
-                  std::to_string(size > need ? need : size) + " bytes; the dimensions need " + std::to_string(need));
+  requireVolumeSize(input, in.mapped->size(), need);
   if (type == VoxelType::UInt8)
     in.data8 = in.mapped->data();
   else

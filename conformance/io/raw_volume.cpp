@@ -108,10 +108,7 @@ std::vector<unsigned char> readBytes(const std::filesystem::path& path, std::siz
               " bytes of data, before the gzip trailer (CRC-32 and length) that ends the stream; the dimensions need " +
               std::to_string(expected));
   }
-  if (total != expected)
-    fail(path, "holds " + std::string(total > expected ? "more than " : "") +
-                   std::to_string(total > expected ? expected : total) + " bytes; the dimensions need " +
-                   std::to_string(expected));
+  requireVolumeSize(path, total, expected);
   bytes.resize(total);
   return bytes;
 }
@@ -122,6 +119,12 @@ void requireVolumeFile(const std::filesystem::path& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec))
     fail(path, std::filesystem::exists(path, ec) ? "is not a regular file" : "does not exist");
+}
+
+void requireVolumeSize(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t need) {
+  if (bytes != need)
+    fail(path, "holds " + std::string(bytes > need ? "more than " : "") + std::to_string(bytes > need ? need : bytes) +
+                   " bytes; the dimensions need " + std::to_string(need));
 }
 
 bool isGzipFile(const std::filesystem::path& path) {

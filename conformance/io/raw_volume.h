@@ -33,6 +33,9 @@ std::size_t voxelsOf(const std::filesystem::path& path, const ref::Dims3& dims);
 // Throws IoError "volume file <path> does not exist" or "... is not a regular file": the readers'
 // first check, and that of the LEB codec, which maps raw volumes (leb_file_codec.h).
 void requireVolumeFile(const std::filesystem::path& path);
+// Throws IoError "volume file <path> holds N bytes; the dimensions need M" ("holds more than M"
+// when longer) unless `bytes` == `need`: the readers' size check, and the LEB file codec's.
+void requireVolumeSize(const std::filesystem::path& path, std::uint64_t bytes, std::uint64_t need);
 // Whether the file's first bytes are gzip's magic (1f 8b): the readers inflate such a file.
 bool isGzipFile(const std::filesystem::path& path);
 

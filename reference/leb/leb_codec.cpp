@@ -297,18 +297,22 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
   return offset;
 }
 
-std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& o) {
-  checkSamples(volume, sampleBits);
-  std::vector<std::int8_t> gradients;
-  if (o.gradients) gradients = quantizedGradients(volume);
+std::string encodeLeb(const LebVolumeIn& v, const LebEncodeOptions& o) {
   std::string stream;
-  const LebVolumeIn v{volume.dims(), sampleBits, nullptr, volume.data().data(),
-                      o.gradients ? gradients.data() : nullptr};
   encodeLebTo(v, o, [&](std::uint64_t offset, std::string_view bytes) {
     if (offset + bytes.size() > stream.size()) stream.resize(offset + bytes.size());
     bytes.copy(stream.data() + offset, bytes.size());
   });
   return stream;
+}
+
+std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& o) {
+  checkSamples(volume, sampleBits);
+  std::vector<std::int8_t> gradients;
+  if (o.gradients) gradients = quantizedGradients(volume);
+  return encodeLeb(
+      LebVolumeIn{volume.dims(), sampleBits, nullptr, volume.data().data(), o.gradients ? gradients.data() : nullptr},
+      o);
 }
 
 std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& o) {

@@ -74,6 +74,9 @@ std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const
 // coded pages per thread, and the page table (12 bytes per stored page); nothing proportional to
 // the volume.
 std::uint64_t encodeLebTo(const LebVolumeIn& volume, const LebEncodeOptions& options, const LebStreamWrite& write);
+// encodeLebTo into a string: the stream of the samples and gradients the span gives (gradients of
+// the caller's own, for example diffused ones, gradients.h). Throws as encodeLebTo.
+std::string encodeLeb(const LebVolumeIn& volume, const LebEncodeOptions& options = {});
 // The memory above, from the extents alone (nothing is allocated).
 std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& options = {});
 // The bound above, from the extents alone (nothing is allocated). Throws std::invalid_argument as

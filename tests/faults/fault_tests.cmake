@@ -46,12 +46,9 @@ voxref_fault(fault.disk_full.stream
 # gradients file and the decoder's outputs are allocated before they are written through their
 # mappings, so the limit is met there, as an error, never as a fault in the middle of the mapping.
 # The volume is the bad-input catalogue's good one (32x32x16 uint8).
-set(fault_leb_volume "${good}/steps/step_000.rgba")
-voxref_expect(fault.setup.leb
-  COMMAND "${voxref_bin}|encode|--codec|leb|--input|${fault_leb_volume}|--dims|32|32|16|--out|${fault_dir}/leb/volume.vxleb"
-  EXIT 0 SETS fault_leb NEEDS "fault_mkdir;bi_volume" LABELS "fault;sanitize")
-voxref_fault(fault.disk_full.leb_encode
-  COMMAND "${voxref_bin}|encode|--codec|leb|--input|${fault_leb_volume}|--dims|32|32|16|--out|${fault_dir}/leb/volume.vxleb"
+set(fault_leb_encode "${voxref_bin}|encode|--codec|leb|--input|${good}/steps/step_000.rgba|--dims|32|32|16|--out|${fault_dir}/leb/volume.vxleb")
+voxref_expect(fault.setup.leb COMMAND "${fault_leb_encode}" EXIT 0 SETS fault_leb NEEDS "fault_mkdir;bi_volume" LABELS "fault;sanitize")
+voxref_fault(fault.disk_full.leb_encode COMMAND "${fault_leb_encode}"
   DIR "${fault_dir}/leb" FSIZE 1 EXPECT "cannot write [^\n]*volume[^\n]*: File too large" NEEDS fault_leb)
 voxref_fault(fault.disk_full.leb_decode
   COMMAND "${voxref_bin}|decode|--codec|leb|--input|${fault_dir}/leb/volume.vxleb|--out|${fault_dir}/leb/volume.raw|--gradients-out|${fault_dir}/leb/volume.grad"
