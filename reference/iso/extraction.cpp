@@ -16,15 +16,24 @@ IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const Diamo
   IsoMeshBuilder builder(grid, isovalue, {dims[0] - 1, dims[1] - 1, dims[2] - 1});
   const HzOrder order(grid);
   ExtractionStats s;
+  // A diamond's tetrahedra come one after another: its hierarchical index is found once.
+  GridPoint lastDiamond{-1, -1, -1};
+  DiamondId lastId = kNoDiamond;
   mesh.forEachLeaf([&](const Tetrahedron& t, const GridPoint& diamond) {
     ++s.leafTetrahedra;
     const bool hasDiamond = diamond[0] >= 0;
     if (bounds != nullptr && hasDiamond && !bounds->mayContain(diamond, isovalue)) return;
     ++s.tetrahedraRead;
     std::array<TetCorner, 4> corners;
-    for (std::size_t k = 0; k < 4; ++k)
-      corners[k] = {t.v[k], field.value(t.v[k]), gradientVector(field.gradient(t.v[k]))};
-    builder.addTetrahedron(corners, hasDiamond ? static_cast<DiamondId>(order.index(diamond)) : kNoDiamond);
+    for (std::size_t k = 0; k < 4; ++k) {
+      const FieldSample f = field.at(t.v[k]);
+      corners[k] = {t.v[k], f.value, gradientVector(f.gradient)};
+    }
+    if (hasDiamond && diamond != lastDiamond) {
+      lastDiamond = diamond;
+      lastId = static_cast<DiamondId>(order.index(diamond));
+    }
+    builder.addTetrahedron(corners, hasDiamond ? lastId : kNoDiamond);
   });
   IsoMesh out = builder.take();
   s.triangles = out.triangleCount();

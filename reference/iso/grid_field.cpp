@@ -38,9 +38,9 @@ DenseGridField::DenseGridField(const Volume<std::uint16_t>& volume, const std::v
   }
 }
 
-std::array<std::int8_t, 3> DenseGridField::gradient(const GridPoint& p) {
-  const std::uint64_t i = 3 * grid_.linearIndex(p);
-  return {gradients_[i], gradients_[i + 1], gradients_[i + 2]};
+FieldSample DenseGridField::at(const GridPoint& p) {
+  const std::uint64_t i = grid_.linearIndex(p);
+  return {values_[i], {gradients_[3 * i], gradients_[3 * i + 1], gradients_[3 * i + 2]}};
 }
 
 CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
@@ -52,14 +52,13 @@ CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream
         "shading");
 }
 
-const CompressedGridField::Entry& CompressedGridField::entry(const GridPoint& p) {
+FieldSample CompressedGridField::at(const GridPoint& p) {
   const std::uint64_t key = grid_.linearIndex(p);
-  if (const auto it = points_.find(key); it != points_.end()) return it->second;
+  if (const FieldSample* known = points_.find(key)) return *known;
   if (points_.size() >= pointCacheEntries_) points_.clear();
-  return points_.emplace(key, Entry{reader_.sample(p), reader_.gradient(p)}).first->second;
+  const FieldSample s{reader_.sample(p), reader_.gradient(p)};
+  points_.try_emplace(key, s);
+  return s;
 }
-
-std::uint16_t CompressedGridField::value(const GridPoint& p) { return entry(p).value; }
-std::array<std::int8_t, 3> CompressedGridField::gradient(const GridPoint& p) { return entry(p).gradient; }
 
 }  // namespace voxref::ref

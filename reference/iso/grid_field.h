@@ -13,25 +13,32 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "reference/common/flat_u64_map.h"
 #include "reference/common/volume.h"
 #include "reference/leb/leb_grid.h"
 #include "reference/leb/leb_reader.h"
 
 namespace voxref::ref {
 
+// What the field holds at a grid point: the value and the stored gradient, snorm8 per component
+// (reference/leb/gradients.h).
+struct FieldSample {
+  std::uint16_t value = 0;
+  std::array<std::int8_t, 3> gradient{};
+};
+
 class GridField {
  public:
   virtual ~GridField() = default;
   virtual const LebGrid& grid() const = 0;
   virtual const Dims3& volumeDims() const = 0;
-  virtual std::uint16_t value(const GridPoint& p) = 0;
-  // The stored gradient, snorm8 per component (reference/leb/gradients.h).
-  virtual std::array<std::int8_t, 3> gradient(const GridPoint& p) = 0;
+  // Both at once: extraction needs both for every corner, and a compressed field finds the point
+  // once.
+  virtual FieldSample at(const GridPoint& p) = 0;
 };
 
 // The volume (and its quantized gradients) extended to the grid, held uncompressed: 2 + 3 bytes
@@ -41,8 +48,7 @@ class DenseGridField final : public GridField {
   DenseGridField(const Volume<std::uint16_t>& volume, const std::vector<std::int8_t>& gradients);
   const LebGrid& grid() const override { return grid_; }
   const Dims3& volumeDims() const override { return dims_; }
-  std::uint16_t value(const GridPoint& p) override { return values_[grid_.linearIndex(p)]; }
-  std::array<std::int8_t, 3> gradient(const GridPoint& p) override;
+  FieldSample at(const GridPoint& p) override;
   const std::vector<std::uint16_t>& values() const { return values_; }
 
  private:
@@ -63,21 +69,15 @@ class CompressedGridField final : public GridField {
                       std::size_t pointCacheEntries = 1u << 22);
   const LebGrid& grid() const override { return grid_; }
   const Dims3& volumeDims() const override { return dims_; }
-  std::uint16_t value(const GridPoint& p) override;
-  std::array<std::int8_t, 3> gradient(const GridPoint& p) override;
+  FieldSample at(const GridPoint& p) override;
   const LebReader& reader() const { return reader_; }
 
  private:
-  struct Entry {
-    std::uint16_t value;
-    std::array<std::int8_t, 3> gradient;
-  };
-  const Entry& entry(const GridPoint& p);
   LebGrid grid_;
   Dims3 dims_;
   LebReader reader_;
   std::size_t pointCacheEntries_;
-  std::unordered_map<std::uint64_t, Entry> points_;
+  FlatU64Map<FieldSample> points_;
 };
 
 // The gradient as a unit-free vector (components / 127).

@@ -28,7 +28,7 @@ std::uint32_t IsoMeshBuilder::crossing(const TetCorner& out, const TetCorner& in
   const bool atVertex = in.value == iso_;
   const std::uint64_t key = atVertex ? (kVertexKey << 32) | grid_.linearIndex(in.p)
                                      : (grid_.linearIndex(out.p) << 32) | grid_.linearIndex(in.p);
-  if (const auto it = edgeVertex_.find(key); it != edgeVertex_.end()) return it->second;
+  if (const std::uint32_t* known = edgeVertex_.find(key)) return *known;
   const glm::dvec3 o(out.p[0], out.p[1], out.p[2]), i(in.p[0], in.p[1], in.p[2]);
   glm::dvec3 position, gradient;
   if (atVertex) {
@@ -41,7 +41,7 @@ std::uint32_t IsoMeshBuilder::crossing(const TetCorner& out, const TetCorner& in
   }
   const double len = glm::length(gradient);
   const std::uint32_t v = newVertex(position, len > 0.0 ? -gradient / len : glm::dvec3(0.0));
-  edgeVertex_.emplace(key, v);
+  edgeVertex_.try_emplace(key, v);
   return v;
 }
 
@@ -49,7 +49,7 @@ std::uint32_t IsoMeshBuilder::clipVertex(std::uint32_t a, std::uint32_t b, int a
   if (a > b) std::swap(a, b);  // one direction for both triangles sharing the edge
   const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | b;
   auto& vertices = clipVertex_[static_cast<std::size_t>(axis)];
-  if (const auto it = vertices.find(key); it != vertices.end()) return it->second;
+  if (const std::uint32_t* known = vertices.find(key)) return *known;
   const glm::dvec3 pa = positions_[a], pb = positions_[b];
   const double t = (clipHi_[axis] - pa[axis]) / (pb[axis] - pa[axis]);
   glm::dvec3 p = pa + t * (pb - pa);
@@ -57,7 +57,7 @@ std::uint32_t IsoMeshBuilder::clipVertex(std::uint32_t a, std::uint32_t b, int a
   const glm::dvec3 n = normals_[a] + t * (normals_[b] - normals_[a]);
   const double len = glm::length(n);
   const std::uint32_t v = newVertex(p, len > 0.0 ? n / len : glm::dvec3(0.0));
-  vertices.emplace(key, v);
+  vertices.try_emplace(key, v);
   return v;
 }
 
@@ -65,21 +65,25 @@ void IsoMeshBuilder::emit(std::array<std::uint32_t, 3> tri, const glm::dvec3& ou
   if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return;
   const glm::dvec3 n = glm::cross(positions_[tri[1]] - positions_[tri[0]], positions_[tri[2]] - positions_[tri[0]]);
   if (glm::dot(n, outward) < 0.0) std::swap(tri[1], tri[2]);
-  // Clip against x <= hi, y <= hi, z <= hi where the volume ends before the grid does.
-  std::vector<std::uint32_t> poly(tri.begin(), tri.end());
+  // Clip against x <= hi, y <= hi, z <= hi where the volume ends before the grid does. Each
+  // plane adds at most one vertex to the convex polygon: at most 6.
+  std::array<std::uint32_t, 6> poly{tri[0], tri[1], tri[2]};
+  std::size_t size = 3;
   for (int axis = 0; axis < 3; ++axis) {
     if (clipHi_[axis] >= grid_.side()) continue;
-    std::vector<std::uint32_t> next;
-    for (std::size_t k = 0; k < poly.size(); ++k) {
-      const std::uint32_t a = poly[k], b = poly[(k + 1) % poly.size()];
+    std::array<std::uint32_t, 6> next{};
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < size; ++k) {
+      const std::uint32_t a = poly[k], b = poly[(k + 1) % size];
       const bool inA = positions_[a][axis] <= clipHi_[axis], inB = positions_[b][axis] <= clipHi_[axis];
-      if (inA) next.push_back(a);
-      if (inA != inB) next.push_back(clipVertex(a, b, axis));
+      if (inA) next[kept++] = a;
+      if (inA != inB) next[kept++] = clipVertex(a, b, axis);
     }
-    poly = std::move(next);
-    if (poly.size() < 3) return;
+    poly = next;
+    size = kept;
+    if (size < 3) return;
   }
-  for (std::size_t k = 1; k + 1 < poly.size(); ++k) {
+  for (std::size_t k = 1; k + 1 < size; ++k) {
     const std::uint32_t a = poly[0], b = poly[k], c = poly[k + 1];
     if (a == b || b == c || a == c) continue;
     mesh_.indices.insert(mesh_.indices.end(), {a, b, c});
@@ -88,22 +92,31 @@ void IsoMeshBuilder::emit(std::array<std::uint32_t, 3> tri, const glm::dvec3& ou
 }
 
 void IsoMeshBuilder::addTetrahedron(const std::array<TetCorner, 4>& c, DiamondId diamond) {
-  std::vector<int> in, out;
+  // The corners inside (value >= isovalue) and outside, each in corner order.
+  struct Corners {
+    std::array<int, 4> at{};
+    std::size_t size = 0;
+    void push_back(int k) { at[size++] = k; }
+    bool empty() const { return size == 0; }
+    int operator[](std::size_t i) const { return at[i]; }
+    const int* begin() const { return at.data(); }
+    const int* end() const { return at.data() + size; }
+  } in, out;
   for (int k = 0; k < 4; ++k) (c[static_cast<std::size_t>(k)].value >= iso_ ? in : out).push_back(k);
   if (in.empty() || out.empty()) return;
   glm::dvec3 outward(0.0);
   for (int k : out)
     outward += glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1],
                           c[static_cast<std::size_t>(k)].p[2]) /
-               double(out.size());
+               double(out.size);
   for (int k : in)
     outward -= glm::dvec3(c[static_cast<std::size_t>(k)].p[0], c[static_cast<std::size_t>(k)].p[1],
                           c[static_cast<std::size_t>(k)].p[2]) /
-               double(in.size());
+               double(in.size);
   auto x = [&](int o, int i) { return crossing(c[static_cast<std::size_t>(o)], c[static_cast<std::size_t>(i)]); };
-  if (in.size() == 1) {
+  if (in.size == 1) {
     emit({x(out[0], in[0]), x(out[1], in[0]), x(out[2], in[0])}, outward, diamond);
-  } else if (in.size() == 3) {
+  } else if (in.size == 3) {
     emit({x(out[0], in[0]), x(out[0], in[1]), x(out[0], in[2])}, outward, diamond);
   } else {  // a quad around the tetrahedron: (o0 i0) (o0 i1) (o1 i1) (o1 i0)
     const std::uint32_t q0 = x(out[0], in[0]), q1 = x(out[0], in[1]), q2 = x(out[1], in[1]), q3 = x(out[1], in[0]);

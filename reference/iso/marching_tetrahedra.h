@@ -22,8 +22,8 @@
 
 #include <array>
 #include <cstdint>
-#include <unordered_map>
 
+#include "reference/common/flat_u64_map.h"
 #include "reference/iso/iso_mesh.h"
 #include "reference/leb/leb_grid.h"
 
@@ -54,9 +54,9 @@ class IsoMeshBuilder {
   double iso_;
   GridPoint clipHi_;
   IsoMesh mesh_;
-  std::vector<glm::dvec3> positions_, normals_;                                 // double while building
-  std::unordered_map<std::uint64_t, std::uint32_t> edgeVertex_;                 // (outside, inside) linear indices
-  std::array<std::unordered_map<std::uint64_t, std::uint32_t>, 3> clipVertex_;  // per axis: (vertex, vertex)
+  std::vector<glm::dvec3> positions_, normals_;          // double while building
+  FlatU64Map<std::uint32_t> edgeVertex_;                 // (outside, inside) linear indices
+  std::array<FlatU64Map<std::uint32_t>, 3> clipVertex_;  // per axis: (vertex, vertex)
 };
 
 }  // namespace voxref::ref

@@ -54,10 +54,20 @@ bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex) {
   return true;
 }
 
-DiamondMesh::DiamondMesh(const LebGrid& grid) : grid_(makeLebGrid(grid.k)) {}
+DiamondMesh::DiamondMesh(const LebGrid& grid)
+    : grid_(makeLebGrid(grid.k)), split_(static_cast<std::size_t>((grid_.pointCount() + 63) / 64), 0) {}
 
-bool DiamondMesh::isSplit(const GridPoint& d) const {
-  return grid_.contains(d) && split_.count(grid_.linearIndex(d)) != 0;
+void DiamondMesh::setSplit(const GridPoint& d, bool split) {
+  const std::uint64_t i = grid_.linearIndex(d);
+  const std::uint64_t bit = std::uint64_t{1} << (i & 63);
+  std::uint64_t& word = split_[static_cast<std::size_t>(i >> 6)];
+  if (((word & bit) != 0) == split) return;
+  word ^= bit;
+  if (split) {
+    ++splitCount_;
+  } else {
+    --splitCount_;
+  }
 }
 
 std::vector<GridPoint> DiamondMesh::split(const GridPoint& d) {
@@ -65,7 +75,7 @@ std::vector<GridPoint> DiamondMesh::split(const GridPoint& d) {
   if (isSplit(d)) return done;
   for (const GridPoint& parent : diamondParents(grid_, d))  // throws for a corner or an outside point
     for (const GridPoint& q : split(parent)) done.push_back(q);
-  split_.insert(grid_.linearIndex(d));
+  setSplit(d, true);
   done.push_back(d);
   return done;
 }
@@ -81,7 +91,7 @@ void DiamondMesh::merge(const GridPoint& d) {
   if (!canMerge(d))
     throw std::logic_error("diamond " + pointText(d) +
                            (isSplit(d) ? " has a split child: merge the children first" : " is not split"));
-  split_.erase(grid_.linearIndex(d));
+  setSplit(d, false);
 }
 
 std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m) {

@@ -27,9 +27,12 @@ const LebChannel& LebReader::channel(LebChannelKind kind) const {
 }
 
 LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
-  const std::uint64_t h = order_.index(p);  // throws for a point outside the grid
-  const std::uint64_t memoKey = (h << 1) | static_cast<std::uint64_t>(c.kind);
-  if (const auto it = memo_.find(memoKey); it != memo_.end()) return it->second;
+  const LebGrid& grid = stream_->grid;
+  if (!grid.contains(p)) order_.index(p);  // throws, naming the point
+  // Keyed by the grid's linear index, which costs no walk of the hierarchy: the hierarchical
+  // index is needed only for a point the memo lacks (to find its page).
+  const std::uint64_t memoKey = (grid.linearIndex(p) << 1) | static_cast<std::uint64_t>(c.kind);
+  if (const Values* known = memo_.find(memoKey)) return *known;
   Values pred{0, 0, 0};
   const LebPointClass pc = classifyPoint(stream_->grid, p);
   if (pc.level >= 0) {
@@ -41,6 +44,7 @@ LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
   }
   Values v = pred;
   if (insideVolume(p, stream_->dims)) {
+    const std::uint64_t h = order_.index(p);
     const std::uint64_t page = h >> stream_->pageBits;
     const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
     PageCache::Page deltas = cache_.find(key);  // the hit path builds no std::function
@@ -52,7 +56,7 @@ LebReader::Values LebReader::valueAt(const LebChannel& c, const GridPoint& p) {
           pred[static_cast<std::size_t>(k)], (*deltas)[at + static_cast<std::size_t>(k)], c.valueBits, c.isSigned);
   }
   ++reconstructed_;
-  memo_.emplace(memoKey, v);
+  memo_.try_emplace(memoKey, v);
   return v;
 }
 

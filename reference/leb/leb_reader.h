@@ -5,7 +5,7 @@
 // (decoding the page on a miss), and adds them to the prediction from p's split edge, whose
 // endpoint values are reconstructed the same way (recursively: the "reconstruction mask"; every
 // endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels).
-// Reconstructed values are memoised, per channel and hierarchical index, and the memo is kept
+// Reconstructed values are memoised, per channel and grid point, and the memo is kept
 // between queries while it holds at most cacheBudgetBytes / kMemoEntryBytes entries (it is
 // emptied before a query when it holds more): neighbouring queries share their coarse ancestors,
 // so a query in a region already visited reconstructs little more than its own point. A point is
@@ -13,7 +13,7 @@
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
 // at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo (about the budget
-// again: kMemoEntryBytes covers an entry of the hash map; beyond that, the entries of one query:
+// again: kMemoEntryBytes covers an entry of its table; beyond that, the entries of one query:
 // the points asked for and their coarser split-edge ancestors), plus reconstructPage's result,
 // 2^pageBits x components x 4 bytes (at most 12 MiB).
 // Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
@@ -24,9 +24,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
+#include "reference/common/flat_u64_map.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_stream.h"
 #include "reference/leb/page_cache.h"
@@ -49,8 +49,9 @@ class LebReader {
   const PageCache::Stats& cacheStats() const { return cache_.stats(); }
   std::uint64_t pointsReconstructed() const { return reconstructed_; }
 
-  // What the memo's capacity charges an entry, in bytes (key, values, node and bucket).
-  static constexpr std::size_t kMemoEntryBytes = 64;
+  // What the memo's capacity charges an entry, in bytes: the most its flat table (flat_u64_map.h)
+  // spends on one, 4 slots of a key and three values.
+  static constexpr std::size_t kMemoEntryBytes = 4 * (8 + 12);
 
  private:
   using Values = std::array<std::int32_t, 3>;
@@ -63,7 +64,7 @@ class LebReader {
   HzOrder order_;
   PageCache cache_;
   std::size_t memoCapacity_;
-  std::unordered_map<std::uint64_t, Values> memo_;  // (hierarchical index, channel) -> values
+  FlatU64Map<Values> memo_;  // (linear index, channel) -> values
   std::uint64_t reconstructed_ = 0;
 };
 

@@ -1,0 +1,102 @@
+// A hash map from 64-bit keys to small values, in one flat array (open addressing, linear
+// probing): the memo and vertex maps of the isosurface path, which do millions of lookups and
+// insertions a frame and never erase one key (they are emptied whole). std::unordered_map
+// allocates a node per entry, and that allocation was the largest single cost of extraction.
+//
+// Contract: any key except kEmptyKey (all ones; try_emplace throws std::invalid_argument for it);
+// find and try_emplace are amortized O(1); the table doubles when it is half full, so it holds at
+// most 4 slots per entry (16 + 4 sizeof(V) bytes per entry at worst, plus the empty table's 16
+// slots). References returned by find and try_emplace are valid until the next try_emplace or
+// clear. Iteration is not offered: results cannot depend on the table's order. Not thread-safe.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace voxref::ref {
+
+template <class V>
+class FlatU64Map {
+ public:
+  static constexpr std::uint64_t kEmptyKey = ~std::uint64_t{0};
+
+  FlatU64Map() { clear(); }
+
+  std::size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+
+  // The value under `key`, or null.
+  const V* find(std::uint64_t key) const {
+    for (std::size_t i = slotOf(key);; i = (i + 1) & mask_) {
+      if (keys_[i] == key) return &values_[i];
+      if (keys_[i] == kEmptyKey) return nullptr;
+    }
+  }
+
+  // Inserts `value` under `key` unless the key is there; returns the value under the key and
+  // whether it was inserted.
+  std::pair<V&, bool> try_emplace(std::uint64_t key, const V& value) {
+    if (key == kEmptyKey) throw std::invalid_argument("FlatU64Map: the key 2^64 - 1 is reserved");
+    if (2 * (size_ + 1) > keys_.size()) grow();
+    std::size_t i = slotOf(key);
+    for (; keys_[i] != kEmptyKey; i = (i + 1) & mask_)
+      if (keys_[i] == key) return {values_[i], false};
+    keys_[i] = key;
+    values_[i] = value;
+    ++size_;
+    return {values_[i], true};
+  }
+
+  // Empties the map and gives its memory back (the table returns to 16 slots).
+  void clear() {
+    keys_.assign(kMinSlots, kEmptyKey);
+    keys_.shrink_to_fit();
+    values_.assign(kMinSlots, V{});
+    values_.shrink_to_fit();
+    mask_ = kMinSlots - 1;
+    shift_ = 64 - 4;
+    size_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kMinSlots = 16;
+
+  // Fibonacci hashing (Knuth, TAOCP vol. 3, section 6.4): the top bits of key * 2^64 / phi, so
+  // keys that differ in their low bits only (neighbouring grid indices) spread over the table.
+  std::size_t slotOf(std::uint64_t key) const {
+    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ULL) >> shift_) & mask_;
+  }
+
+  void grow() {
+    std::vector<std::uint64_t> keys(keys_.size() * 2, kEmptyKey);
+    std::vector<V> values(keys.size());
+    keys.swap(keys_);
+    values.swap(values_);
+    mask_ = keys_.size() - 1;
+    shift_ = 64 - bitsOf(keys_.size());
+    for (std::size_t j = 0; j < keys.size(); ++j) {
+      if (keys[j] == kEmptyKey) continue;
+      std::size_t i = slotOf(keys[j]);
+      while (keys_[i] != kEmptyKey) i = (i + 1) & mask_;
+      keys_[i] = keys[j];
+      values_[i] = values[j];
+    }
+  }
+
+  static int bitsOf(std::size_t powerOfTwo) {
+    int b = 0;
+    while ((std::size_t{1} << b) < powerOfTwo) ++b;
+    return b;
+  }
+
+  std::vector<std::uint64_t> keys_;
+  std::vector<V> values_;
+  std::size_t mask_ = kMinSlots - 1;
+  int shift_ = 64 - 4;  // 64 - log2(slots)
+  std::size_t size_ = 0;
+};
+
+}  // namespace voxref::ref

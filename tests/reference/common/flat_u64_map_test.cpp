@@ -1,0 +1,53 @@
+#include "reference/common/flat_u64_map.h"
+
+#include <array>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <unordered_map>
+
+#include <gtest/gtest.h>
+
+namespace voxref::ref {
+namespace {
+
+// The oracle is std::unordered_map: the same sequence of insertions and lookups must give the same
+// answers, through many doublings of the flat table and across clear().
+TEST(FlatU64Map, AgreesWithStdUnorderedMapOverRandomInsertionsAndLookups) {
+  std::mt19937_64 rng(7);
+  FlatU64Map<std::array<std::int32_t, 3>> flat;
+  std::unordered_map<std::uint64_t, std::array<std::int32_t, 3>> oracle;
+  for (int round = 0; round < 3; ++round) {
+    for (int i = 0; i < 200000; ++i) {
+      // Keys that collide in their low bits (grid indices of neighbours) and some far apart.
+      const std::uint64_t key = (i % 3 == 0) ? rng() >> 1 : (rng() % 50000) << (i % 7);
+      const std::array<std::int32_t, 3> value{i, -i, round};
+      const auto [v, inserted] = flat.try_emplace(key, value);
+      const auto [it, oracleInserted] = oracle.try_emplace(key, value);
+      ASSERT_EQ(inserted, oracleInserted) << "key " << key;
+      ASSERT_EQ(v, it->second) << "key " << key;
+      const std::uint64_t probe = rng() % 60000;
+      const auto* found = flat.find(probe);
+      const auto o = oracle.find(probe);
+      ASSERT_EQ(found != nullptr, o != oracle.end()) << "probe " << probe;
+      if (found != nullptr) ASSERT_EQ(*found, o->second);
+    }
+    ASSERT_EQ(flat.size(), oracle.size());
+    flat.clear();
+    oracle.clear();
+    EXPECT_TRUE(flat.empty());
+    EXPECT_EQ(flat.find(0), nullptr);
+  }
+}
+
+TEST(FlatU64Map, KeepsTheFirstValueOfAKeyAndRefusesTheReservedKey) {
+  FlatU64Map<std::uint32_t> m;
+  EXPECT_TRUE(m.try_emplace(0, 5).second);
+  EXPECT_FALSE(m.try_emplace(0, 6).second);
+  EXPECT_EQ(*m.find(0), 5u);
+  EXPECT_THROW(m.try_emplace(FlatU64Map<std::uint32_t>::kEmptyKey, 1), std::invalid_argument);
+  EXPECT_EQ(m.size(), 1u);
+}
+
+}  // namespace
+}  // namespace voxref::ref
