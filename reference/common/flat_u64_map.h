@@ -10,6 +10,7 @@
 // clear. Iteration is not offered: results cannot depend on the table's order. Not thread-safe.
 #pragma once
 
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>
@@ -56,8 +57,7 @@ class FlatU64Map {
     keys_.shrink_to_fit();
     values_.assign(kMinSlots, V{});
     values_.shrink_to_fit();
-    mask_ = kMinSlots - 1;
-    shift_ = 64 - 4;
+    resized();
     size_ = 0;
   }
 
@@ -75,8 +75,7 @@ class FlatU64Map {
     std::vector<V> values(keys.size());
     keys.swap(keys_);
     values.swap(values_);
-    mask_ = keys_.size() - 1;
-    shift_ = 64 - bitsOf(keys_.size());
+    resized();
     for (std::size_t j = 0; j < keys.size(); ++j) {
       if (keys[j] == kEmptyKey) continue;
       std::size_t i = slotOf(keys[j]);
@@ -86,16 +85,16 @@ class FlatU64Map {
     }
   }
 
-  static int bitsOf(std::size_t powerOfTwo) {
-    int b = 0;
-    while ((std::size_t{1} << b) < powerOfTwo) ++b;
-    return b;
+  // The mask and shift of a table of keys_.size() slots (a power of two).
+  void resized() {
+    mask_ = keys_.size() - 1;
+    shift_ = 64 - std::countr_zero(keys_.size());
   }
 
   std::vector<std::uint64_t> keys_;
   std::vector<V> values_;
-  std::size_t mask_ = kMinSlots - 1;
-  int shift_ = 64 - 4;  // 64 - log2(slots)
+  std::size_t mask_ = 0;
+  int shift_ = 64;  // 64 - log2(slots)
   std::size_t size_ = 0;
 };
 

@@ -30,7 +30,9 @@ TEST(FlatU64Map, AgreesWithStdUnorderedMapOverRandomInsertionsAndLookups) {
       const auto* found = flat.find(probe);
       const auto o = oracle.find(probe);
       ASSERT_EQ(found != nullptr, o != oracle.end()) << "probe " << probe;
-      if (found != nullptr) ASSERT_EQ(*found, o->second);
+      if (found != nullptr) {
+        ASSERT_EQ(*found, o->second);
+      }
     }
     ASSERT_EQ(flat.size(), oracle.size());
     flat.clear();
