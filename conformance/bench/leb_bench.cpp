@@ -330,7 +330,8 @@ RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int th
           p = {std::min(brick[0] + (i & 7), s->dims[0] - 1), std::min(brick[1] + ((i >> 3) & 7), s->dims[1] - 1),
                std::min(brick[2] + ((i >> 6) & 7), s->dims[2] - 1)};
         }
-        sink += reader.sample(p) + static_cast<std::uint64_t>(reader.gradient(p)[0] + 128);
+        const ref::LebReader::SampleAndGradient v = reader.sampleAndGradient(p);
+        sink += v.sample + static_cast<std::uint64_t>(v.gradient[0] + 128);
       }
       misses[static_cast<std::size_t>(worker)] = reader.cacheStats().misses + (sink == 0 ? 0 : 0);
       done[static_cast<std::size_t>(worker)] = static_cast<std::uint64_t>(i);

@@ -6,10 +6,12 @@
 // Contract: any key except kEmptyKey (all ones; try_emplace throws std::invalid_argument for it);
 // find and try_emplace are amortized O(1); the table doubles when it is half full, so it holds at
 // most 4 slots per entry (16 + 4 sizeof(V) bytes per entry at worst, plus the empty table's 16
-// slots). References returned by find and try_emplace are valid until the next try_emplace or
+// slots), and 6 while it doubles (the old table and the new one); a table reserved for n entries
+// never doubles before it holds n. References returned by find and try_emplace are valid until the next try_emplace or
 // clear. Iteration is not offered: results cannot depend on the table's order. Not thread-safe.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -36,6 +38,7 @@ class FlatU64Map {
       if (keys_[i] == kEmptyKey) return nullptr;
     }
   }
+  V* find(std::uint64_t key) { return const_cast<V*>(std::as_const(*this).find(key)); }
 
   // Inserts `value` under `key` unless the key is there; returns the value under the key and
   // whether it was inserted.
@@ -49,6 +52,15 @@ class FlatU64Map {
     values_[i] = value;
     ++size_;
     return {values_[i], true};
+  }
+
+  // Sizes the table for n entries at once (at most 4n slots, 16 at least); only on an empty map.
+  void reserve(std::size_t n) {
+    if (size_ != 0) throw std::logic_error("FlatU64Map: reserve on a map that holds entries");
+    const std::size_t slots = std::max(kMinSlots, std::bit_ceil(2 * n));
+    keys_.assign(slots, kEmptyKey);
+    values_.assign(slots, V{});
+    resized();
   }
 
   // Empties the map and gives its memory back (the table returns to 16 slots).

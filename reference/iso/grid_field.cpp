@@ -1,5 +1,7 @@
 #include "reference/iso/grid_field.h"
 
+#include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -45,20 +47,25 @@ FieldSample DenseGridField::at(const GridPoint& p) {
 
 CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
                                          std::size_t pointCacheEntries)
-    : grid_(stream->grid), dims_(stream->dims), reader_(stream, pageCacheBytes), pointCacheEntries_(pointCacheEntries) {
+    : grid_(stream->grid), dims_(stream->dims), reader_(stream, pageCacheBytes) {
   if (stream->channel(LebChannelKind::Gradients) == nullptr)
     throw std::invalid_argument(
         "the stream has no gradients channel (encoded with --no-gradients): isosurfaces need the gradients for "
         "shading");
+  // Modulo a power of two at least the grid's points, no two points share a slot.
+  const std::uint64_t slots = std::min<std::uint64_t>(std::bit_floor(std::max<std::size_t>(1, pointCacheEntries)),
+                                                      std::bit_ceil(grid_.pointCount()));
+  points_.resize(static_cast<std::size_t>(slots));
+  mask_ = slots - 1;
 }
 
 FieldSample CompressedGridField::at(const GridPoint& p) {
   const std::uint64_t key = grid_.linearIndex(p);
-  if (const FieldSample* known = points_.find(key)) return *known;
-  if (points_.size() >= pointCacheEntries_) points_.clear();
-  const FieldSample s{reader_.sample(p), reader_.gradient(p)};
-  points_.try_emplace(key, s);
-  return s;
+  CachedPoint& slot = points_[static_cast<std::size_t>(key & mask_)];
+  if (slot.key == key) return slot.sample;
+  const LebReader::SampleAndGradient both = reader_.sampleAndGradient(p);
+  slot = {key, FieldSample{both.sample, both.gradient}};
+  return slot.sample;
 }
 
 }  // namespace voxref::ref

@@ -17,7 +17,6 @@
 
 #include <glm/vec3.hpp>
 
-#include "reference/common/flat_u64_map.h"
 #include "reference/common/volume.h"
 #include "reference/leb/leb_grid.h"
 #include "reference/leb/leb_reader.h"
@@ -59,9 +58,12 @@ class DenseGridField final : public GridField {
 };
 
 // The field read from a compressed stream with a gradients channel: every value comes from
-// LebReader (pages decoded on demand, kept in its LRU cache). Values already asked for are kept in
-// a point cache of at most `pointCacheEntries` entries (cleared when full), since extraction asks
-// for every mesh vertex several times. Throws std::invalid_argument for a stream without
+// LebReader (pages decoded on demand, kept in its LRU cache, one walk of the hierarchy for a
+// point's sample and gradient). Values already asked for are kept in a direct-mapped point cache
+// (extraction asks for every mesh vertex several times): slot = linear index modulo its size, the
+// power of two at most `pointCacheEntries`, or the one at least the grid's points if smaller;
+// 16 bytes a slot, a newer point replacing an older one in its slot. Grid neighbours along x share cache lines,
+// which a hashed table would scatter. Throws std::invalid_argument for a stream without
 // gradients.
 class CompressedGridField final : public GridField {
  public:
@@ -73,11 +75,15 @@ class CompressedGridField final : public GridField {
   const LebReader& reader() const { return reader_; }
 
  private:
+  struct CachedPoint {
+    std::uint64_t key = ~std::uint64_t{0};  // the linear index; all ones for an empty slot
+    FieldSample sample;
+  };
   LebGrid grid_;
   Dims3 dims_;
   LebReader reader_;
-  std::size_t pointCacheEntries_;
-  FlatU64Map<FieldSample> points_;
+  std::vector<CachedPoint> points_;
+  std::uint64_t mask_ = 0;
 };
 
 // The gradient as a unit-free vector (components / 127).

@@ -7,30 +7,81 @@
 
 namespace voxref::ref {
 
+bool ViewRefinement::Queue::live(const std::pair<double, std::uint64_t>& e) const {
+  const Member* m = index_.find(e.second);
+  return m && m->present && m->priority == e.first;
+}
+
 void ViewRefinement::Queue::insert(std::uint64_t id, double priority) {
-  erase(id);
-  order_.emplace(priority, id);
-  priority_.emplace(id, priority);
+  auto [m, added] = index_.try_emplace(id, Member{priority, true});
+  if (added) {
+    ++size_;
+  } else if (m.present) {
+    if (m.priority == priority) return;  // there already, at this priority
+    m.priority = priority;               // its older heap entry is stale now
+  } else {
+    m = Member{priority, true};
+    --absent_;
+    ++size_;
+  }
+  heap_.emplace_back(priority, id);
+  std::push_heap(heap_.begin(), heap_.end(), [this](const auto& a, const auto& b) { return before(a, b); });
 }
 
 void ViewRefinement::Queue::erase(std::uint64_t id) {
-  const auto it = priority_.find(id);
-  if (it == priority_.end()) return;
-  order_.erase({it->second, id});
-  priority_.erase(it);
+  Member* m = index_.find(id);
+  if (!m || !m->present) return;
+  m->present = false;
+  --size_;
+  ++absent_;
+  if (heap_.size() > 2 * size_ + 1024 || absent_ > 2 * size_ + 1024) {
+    std::vector<std::pair<double, std::uint64_t>> entries;
+    for (const auto& e : heap_)
+      if (live(e)) entries.push_back(e);
+    rebuild(std::move(entries));
+  }
+}
+
+bool ViewRefinement::Queue::contains(std::uint64_t id) const {
+  const Member* m = index_.find(id);
+  return m && m->present;
+}
+
+std::pair<double, std::uint64_t> ViewRefinement::Queue::top() {
+  const auto cmp = [this](const auto& a, const auto& b) { return before(a, b); };
+  while (!live(heap_.front())) {
+    std::pop_heap(heap_.begin(), heap_.end(), cmp);
+    heap_.pop_back();
+  }
+  return heap_.front();
 }
 
 std::vector<std::uint64_t> ViewRefinement::Queue::ids() const {
   std::vector<std::uint64_t> ids;
-  ids.reserve(priority_.size());
-  for (const auto& [id, p] : priority_) ids.push_back(id);
+  ids.reserve(size_);
+  for (const auto& e : heap_)
+    if (live(e)) ids.push_back(e.second);
   std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());  // a member re-inserted at its old priority
   return ids;
 }
 
-void ViewRefinement::Queue::clear() {
-  order_.clear();
-  priority_.clear();
+void ViewRefinement::Queue::rebuild(std::vector<std::pair<double, std::uint64_t>> entries) {
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
+  index_.clear();
+  index_.reserve(entries.size());
+  for (const auto& e : entries) index_.try_emplace(e.second, Member{e.first, true});
+  size_ = entries.size();
+  absent_ = 0;
+  heap_ = std::move(entries);
+  std::make_heap(heap_.begin(), heap_.end(), [this](const auto& a, const auto& b) { return before(a, b); });
+}
+
+void ViewRefinement::Queue::reprioritise(const std::function<double(std::uint64_t)>& priorityOf) {
+  std::vector<std::pair<double, std::uint64_t>> entries;
+  for (const std::uint64_t id : ids()) entries.emplace_back(priorityOf(id), id);
+  rebuild(std::move(entries));
 }
 
 ViewRefinement::ViewRefinement(const DiamondBounds& bounds, double isovalue)
@@ -84,24 +135,20 @@ RefinementStats ViewRefinement::update(const ViewCamera& camera, const Refinemen
   camera_ = camera;
   occluded_ = occluded;
   // New camera: every priority changes.
-  for (Queue* q : {&split_, &merge_}) {
-    const std::vector<std::uint64_t> ids = q->ids();
-    q->clear();
-    for (std::uint64_t id : ids) q->insert(id, priority(pointOf(id)));
-  }
+  for (Queue* q : {&split_, &merge_}) q->reprioritise([&](std::uint64_t id) { return priority(pointOf(id)); });
   RefinementStats stats;
-  while (!split_.empty() && split_.highest().first > budget.threshold) {
+  while (!split_.empty() && split_.top().first > budget.threshold) {
     if (stats.splits >= budget.maxSplits) {
       stats.budgetExhausted = true;
       break;
     }
-    for (const GridPoint& q : mesh_.split(pointOf(split_.highest().second))) {
+    for (const GridPoint& q : mesh_.split(pointOf(split_.top().second))) {
       afterSplit(q);
       ++stats.splits;
     }
   }
-  while (!merge_.empty() && merge_.lowest().first <= budget.threshold && stats.merges < budget.maxMerges) {
-    const GridPoint d = pointOf(merge_.lowest().second);
+  while (!merge_.empty() && merge_.top().first <= budget.threshold && stats.merges < budget.maxMerges) {
+    const GridPoint d = pointOf(merge_.top().second);
     mesh_.merge(d);
     afterMerge(d);
     ++stats.merges;

@@ -22,11 +22,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <map>
-#include <set>
-#include <unordered_map>
 #include <vector>
 
+#include "reference/common/flat_u64_map.h"
 #include "reference/common/view_camera.h"
 #include "reference/iso/diamond_bounds.h"
 #include "reference/leb/diamond_mesh.h"
@@ -65,22 +63,39 @@ class ViewRefinement {
   std::vector<GridPoint> mergeQueue() const;
 
  private:
-  // An ordered set of diamonds by (priority, index) with membership by index.
+  // A priority queue of diamonds by (priority, index), the highest or the lowest pair first, with
+  // membership by index. A binary heap with lazy deletion: erase marks the member gone in the
+  // index, and heap entries whose member is gone or whose priority is not the member's are
+  // dropped when they reach the top; the heap and the index are rebuilt from the members when
+  // stale entries outnumber them. So top() is the extreme (priority, index) pair of the members,
+  // whatever the order of the operations: a total order, deterministic.
   class Queue {
    public:
+    explicit Queue(bool highestFirst) : highestFirst_(highestFirst) {}
     void insert(std::uint64_t id, double priority);
     void erase(std::uint64_t id);
-    bool contains(std::uint64_t id) const { return priority_.count(id) != 0; }
-    bool empty() const { return order_.empty(); }
-    std::size_t size() const { return order_.size(); }
-    std::pair<double, std::uint64_t> highest() const { return *order_.rbegin(); }
-    std::pair<double, std::uint64_t> lowest() const { return *order_.begin(); }
-    std::vector<std::uint64_t> ids() const;
-    void clear();
+    bool contains(std::uint64_t id) const;
+    bool empty() const { return size_ == 0; }
+    std::size_t size() const { return size_; }
+    std::pair<double, std::uint64_t> top();  // the queue must not be empty
+    std::vector<std::uint64_t> ids() const;  // ascending
+    // Every member's priority anew (a new camera), in one heap build.
+    void reprioritise(const std::function<double(std::uint64_t)>& priorityOf);
 
    private:
-    std::set<std::pair<double, std::uint64_t>> order_;
-    std::unordered_map<std::uint64_t, double> priority_;
+    struct Member {
+      double priority = 0.0;
+      bool present = false;
+    };
+    bool before(const std::pair<double, std::uint64_t>& a, const std::pair<double, std::uint64_t>& b) const {
+      return highestFirst_ ? a < b : b < a;  // the heap's "less": its top is the greatest
+    }
+    bool live(const std::pair<double, std::uint64_t>& e) const;
+    void rebuild(std::vector<std::pair<double, std::uint64_t>> entries);
+    bool highestFirst_;
+    std::size_t size_ = 0, absent_ = 0;  // members, and ids the index marks gone
+    FlatU64Map<Member> index_;
+    std::vector<std::pair<double, std::uint64_t>> heap_;
   };
   GridPoint pointOf(std::uint64_t id) const;
   void afterSplit(const GridPoint& q);
@@ -90,7 +105,7 @@ class ViewRefinement {
   const DiamondBounds* bounds_;
   double isovalue_;
   DiamondMesh mesh_;
-  Queue split_, merge_;
+  Queue split_{true}, merge_{false};
   ViewCamera camera_;
   std::function<bool(const GridPoint&)> occluded_;
 };

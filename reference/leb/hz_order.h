@@ -156,7 +156,7 @@ inline std::uint64_t mortonEncode(const int* c, int count) {
       return 0;
   }
 }
-inline void mortonDecode(std::uint64_t code, int count, int* c) {
+[[gnu::always_inline]] inline void mortonDecode(std::uint64_t code, int count, int* c) {
   using namespace hz_detail;
   switch (count) {
     case 3:

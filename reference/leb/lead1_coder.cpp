@@ -108,8 +108,9 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
   for (int ctx = 0; ctx < symbols_; ++ctx)
     tables_.emplace_back(std::span<const std::uint8_t>(code.lengths)
                              .subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
-  // The one-lookup entries: every kFastBits-bit window whose leading bits hold a whole value of
-  // the context's code (the same code, sign and magnitude rules as nextByTable).
+  // The one-lookup entries: every kFastBits-bit window that starts with a whole code of the
+  // context (its sign and magnitude may run past the window), except symbol valueBits, whose
+  // magnitude the table path checks (signMagnitude: below it every magnitude is in range).
   constexpr int F = kFastBits;
   fast_.assign(static_cast<std::size_t>(symbols_) << F, 0);
   for (int ctx = 0; ctx < symbols_; ++ctx) {
@@ -118,16 +119,8 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
     for (std::uint32_t window = 0; window < (1u << F); ++window) {
       const std::uint16_t e = t.entry(t.bits() <= F ? window >> (F - t.bits()) : window << (t.bits() - F));
       const int length = e & 15, s = e >> 4;
-      if (e == 0 || length + s > F) continue;
-      std::int32_t d = 0;
-      if (s > 0) {
-        const SignMagnitude v = signMagnitude((window >> (F - length - s)) & ((1u << s) - 1), s, valueBits_);
-        if (!v.inRange) continue;
-        d = v.delta();
-      }
-      fast_[(static_cast<std::size_t>(ctx) << F) | window] =
-          static_cast<std::uint32_t>(length + s) | static_cast<std::uint32_t>(s) << 5 |
-          static_cast<std::uint32_t>(static_cast<std::uint16_t>(d)) << 16;
+      if (e == 0 || length > F || s == valueBits_) continue;
+      fast_[(static_cast<std::size_t>(ctx) << F) | window] = static_cast<std::uint16_t>((length + s) | s << 5);
     }
   }
 }
@@ -135,13 +128,36 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
 void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
                               std::string_view what) const {
   Lead1PageReader r(*this, page, streamOffset, std::string(what));
-  for (std::int32_t& d : out) d = r.next();
+  r.read(out);
   r.finish();
 }
 
 Lead1PageReader::Lead1PageReader(const Lead1Decoder& decoder, std::string_view page, std::size_t streamOffset,
                                  std::string what)
     : decoder_(&decoder), page_(page), in_(page), streamOffset_(streamOffset), what_(std::move(what)) {}
+
+void Lead1PageReader::read(std::span<std::int32_t> out) {
+  std::size_t i = 0;
+  while (i < out.size()) {
+    // A run of one-lookup values on local copies (registers), then one value by the table path.
+    BitReader in = in_;
+    int context = context_;
+    const std::size_t start = i;
+    for (; i < out.size(); ++i) {
+      const std::uint32_t e = decoder_->fastEntry(context, in.peek(Lead1Decoder::kFastBits));
+      if (e == 0) break;
+      out[i] = Lead1Decoder::fastDelta(e, in.peek(static_cast<int>(e & 31)));
+      in.skip(static_cast<int>(e & 31));
+      context = static_cast<int>(e >> 5);
+    }
+    if (in.overrun()) [[unlikely]]
+      for (std::size_t j = start; j < i; ++j) (void)next();  // replays the run to throw at its value
+    in_ = in;
+    context_ = context;
+    read_ += i - start;
+    if (i < out.size()) out[i++] = nextByTable();
+  }
+}
 
 void Lead1PageReader::fail(const std::string& detail) const {
   throw StreamError(streamOffset_ + std::min(page_.size(), in_.bitsConsumed() / 8),

@@ -1,9 +1,11 @@
 #include "reference/leb/leb_codec.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
@@ -107,6 +109,45 @@ void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& paddi
         order, dims, padding, inside, [&](std::size_t vi, int) { return static_cast<std::int32_t>(inside.data16[vi]); },
         begin, end, valueOf);
 }
+
+// Values of one level's part of a page as the decoder's walk finds them, reconstructed in runs:
+// the walk reads only coarser levels, so the deltas of a run can be decoded in one go
+// (Lead1PageReader::read, in the order next() would give them) and the values stored after.
+class DecodeRun {
+ public:
+  DecodeRun(const ChannelSpec& spec, const LebVolumeOut& out) : spec_(spec), out_(out) {}
+  // The value at output position `at` (the sample index, or 3 x sample + component) is its
+  // prediction plus the reader's next delta.
+  void add(std::size_t at, std::int32_t prediction, Lead1PageReader& reader) {
+    at_[n_] = at;
+    prediction_[n_] = prediction;
+    if (++n_ == kValues) flush(reader);
+  }
+  void flush(Lead1PageReader& reader) {
+    const std::span<std::int32_t> delta(delta_.data(), n_);
+    reader.read(delta);
+    auto store = [&](auto* to) {
+      using T = std::remove_pointer_t<decltype(to)>;
+      for (std::size_t j = 0; j < n_; ++j)
+        to[at_[j]] = static_cast<T>(reconstructSample(prediction_[j], delta[j], spec_.valueBits, spec_.isSigned));
+    };
+    if (spec_.kind == LebChannelKind::Gradients)
+      store(out_.gradients);
+    else if (out_.data8)
+      store(out_.data8);
+    else
+      store(out_.data16);
+    n_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kValues = 768;  // 256 points of 3 components
+  const ChannelSpec& spec_;
+  const LebVolumeOut& out_;
+  std::size_t n_ = 0;
+  std::array<std::size_t, kValues> at_;
+  std::array<std::int32_t, kValues> prediction_, delta_;
+};
 
 // The deltas of a run of pages, per stored page (the pages that hold a point of the volume).
 struct RunDeltas {
@@ -404,18 +445,14 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
                   const int from = first * perBatch, to = std::min(static_cast<int>(segments.size()), last * perBatch);
                   parallelFor(to - from, threads, [&](int i) {
                     const Segment& seg = segments[static_cast<std::size_t>(from + i)];
+                    DecodeRun run(spec, out);
                     walkInside(order, s.dims, padding, inside, seg.begin, seg.end,
                                [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
                                  if (!seg.reader) throw pageNotStored(ch, h >> pb);
-                                 const std::int32_t v =
-                                     reconstructSample(pred, seg.reader->next(), spec.valueBits, spec.isSigned);
-                                 if (ch.kind == LebChannelKind::Gradients)
-                                   out.gradients[3 * vi + static_cast<std::size_t>(k)] = static_cast<std::int8_t>(v);
-                                 else if (out.data8)
-                                   out.data8[vi] = static_cast<std::uint8_t>(v);
-                                 else
-                                   out.data16[vi] = static_cast<std::uint16_t>(v);
+                                 run.add(static_cast<std::size_t>(spec.components) * vi + static_cast<std::size_t>(k),
+                                         pred, *seg.reader);
                                });
+                    if (seg.reader) run.flush(*seg.reader);
                   });
                 });
       for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {

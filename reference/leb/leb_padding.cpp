@@ -12,10 +12,9 @@ LebPadding::LebPadding(const LebGrid& grid, const Dims3& dims, int components)
 }
 
 const LebValues& LebPadding::at(const GridPoint& q) const {
-  const auto it = values_.find(grid_.linearIndex(q));
-  if (it == values_.end())
-    throw std::logic_error("LEB padding point " + pointText(q) + " is outside the shell a prediction can reach");
-  return it->second;
+  const LebValues* v = values_.find(grid_.linearIndex(q));
+  if (!v) throw std::logic_error("LEB padding point " + pointText(q) + " is outside the shell a prediction can reach");
+  return *v;
 }
 
 std::uint64_t LebPadding::shellPoints(const LebGrid& grid, const Dims3& dims) {

@@ -18,8 +18,8 @@
 #include <array>
 #include <bit>
 #include <cstdint>
-#include <unordered_map>
 
+#include "reference/common/flat_u64_map.h"
 #include "reference/common/volume.h"
 #include "reference/leb/leb_grid.h"
 #include "reference/leb/prediction.h"
@@ -71,8 +71,9 @@ class LebPadding {
 
   // The number of shell points, from the extents alone (a closed form per level and orientation).
   static std::uint64_t shellPoints(const LebGrid& grid, const Dims3& dims);
-  // An upper bound on one entry's memory (hash node, allocator overhead, bucket), for the bounds.
-  static constexpr std::uint64_t kBytesPerPoint = 96;
+  // An upper bound on one entry's memory, for the bounds: the table is reserved for the whole
+  // shell, so at most 4 slots of a key and the values (flat_u64_map.h), and it never doubles.
+  static constexpr std::uint64_t kBytesPerPoint = 4 * (8 + sizeof(LebValues));
 
  private:
   // Calls f(p, scaleLog2, oddAxes) for every shell point of `level`.
@@ -82,7 +83,7 @@ class LebPadding {
   LebGrid grid_;
   Dims3 dims_;
   int components_;
-  std::unordered_map<std::uint64_t, LebValues> values_;  // by linearIndex
+  FlatU64Map<LebValues> values_;  // by linearIndex, reserved for the whole shell
 };
 
 template <class F>
@@ -116,9 +117,9 @@ void LebPadding::forEachShellPoint(int level, F&& f) const {
 template <class Inside>
 void LebPadding::addLevel(int level, Inside&& inside) {
   forEachShellPoint(level, [&](const GridPoint& p, int scaleLog2, unsigned odd) {
-    values_.emplace(grid_.linearIndex(p),
-                    predictPoint(p, level, scaleLog2, odd, components_,
-                                 [&](const GridPoint& q, int k) { return valueAt(q, k, inside); }));
+    values_.try_emplace(grid_.linearIndex(p),
+                        predictPoint(p, level, scaleLog2, odd, components_,
+                                     [&](const GridPoint& q, int k) { return valueAt(q, k, inside); }));
   });
 }
 

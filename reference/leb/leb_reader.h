@@ -5,7 +5,8 @@
 // (decoding the page on a miss), and adds them to the prediction from p's split edge, whose
 // endpoint values are reconstructed the same way (recursively: the "reconstruction mask"; every
 // endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels).
-// Reconstructed values are memoised, per channel and grid point, and the memo is kept
+// Reconstructed values are memoised per grid point (the channels a query asked for: one entry
+// holds a point's sample and its gradient, and a query for both walks the hierarchy once), and the memo is kept
 // between queries while it holds at most cacheBudgetBytes / kMemoEntryBytes entries (it is
 // emptied before a query when it holds more): neighbouring queries share their coarse ancestors,
 // so a query in a region already visited reconstructs little more than its own point. A point is
@@ -42,6 +43,13 @@ class LebReader {
   std::uint16_t sample(const GridPoint& p);
   // The quantized gradient at p.
   std::array<std::int8_t, 3> gradient(const GridPoint& p);
+  // Both at once, as sample(p) and gradient(p) give them, in one walk of p's ancestors (what an
+  // isosurface extraction asks for at every corner).
+  struct SampleAndGradient {
+    std::uint16_t sample = 0;
+    std::array<std::int8_t, 3> gradient{};
+  };
+  SampleAndGradient sampleAndGradient(const GridPoint& p);
   // Every value of one page: 2^pageBits x components entries in hierarchical order (entries past
   // the grid's last point are 0).
   std::vector<std::int32_t> reconstructPage(LebChannelKind kind, std::uint64_t page);
@@ -49,22 +57,29 @@ class LebReader {
   const PageCache::Stats& cacheStats() const { return cache_.stats(); }
   std::uint64_t pointsReconstructed() const { return reconstructed_; }
 
+  // A point's memo entry: the sample (slot 0) and the gradient (slots 1-3), and which of the two
+  // channels are known (bit 0 data, bit 1 gradients).
+  struct Known {
+    std::array<std::int32_t, 4> v{};
+    unsigned channels = 0;
+  };
   // What the memo's capacity charges an entry, in bytes: the most its flat table (flat_u64_map.h)
-  // spends on one, 4 slots of a key and three values.
-  static constexpr std::size_t kMemoEntryBytes = 4 * (8 + 12);
+  // spends on one, 6 slots of a key and an entry (while the table doubles).
+  static constexpr std::size_t kMemoEntryBytes = 6 * (8 + sizeof(Known));
 
  private:
-  using Values = std::array<std::int32_t, 3>;
   // Starts a query: empties the memo if it is over its capacity.
   void beginQuery();
-  Values valueAt(const LebChannel& c, const GridPoint& p);
+  // The channels of `want` (and any the memo already knows) at p.
+  Known valueAt(unsigned want, const GridPoint& p);
   const LebChannel& channel(LebChannelKind kind) const;
+  static unsigned channelBit(LebChannelKind kind) { return kind == LebChannelKind::Data ? 1u : 2u; }
 
   std::shared_ptr<const LebStream> stream_;
   HzOrder order_;
   PageCache cache_;
   std::size_t memoCapacity_;
-  FlatU64Map<Values> memo_;  // (linear index, channel) -> values
+  FlatU64Map<Known> memo_;  // by linear index
   std::uint64_t reconstructed_ = 0;
 };
 

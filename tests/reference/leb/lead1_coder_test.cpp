@@ -1,5 +1,6 @@
 #include "reference/leb/lead1_coder.h"
 
+#include <algorithm>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -74,6 +75,38 @@ TEST_P(Lead1RoundTrip, RandomDeltasIncludingTheExtremes) {
     std::vector<std::int32_t> back(p.size());
     dec.decodePage(bytes, back, 0, "page");
     EXPECT_EQ(back, p);
+    // read() (runs of one-lookup values in registers) against next() one value at a time, in
+    // chunks of every size, and on truncated pages: the same values, the same error.
+    for (std::size_t chunk : {std::size_t{1}, std::size_t{7}, std::size_t{768}, p.size()}) {
+      Lead1PageReader byRead(dec, bytes, 0, "page");
+      std::vector<std::int32_t> got;
+      for (std::size_t at = 0; at < p.size(); at += chunk) {
+        std::vector<std::int32_t> part(std::min(chunk, p.size() - at));
+        byRead.read(part);
+        got.insert(got.end(), part.begin(), part.end());
+      }
+      EXPECT_EQ(got, p) << "chunk " << chunk;
+    }
+    for (std::size_t cut = 1; cut < bytes.size(); cut += bytes.size() / 5) {
+      const std::string_view shorter = std::string_view(bytes).substr(0, bytes.size() - cut);
+      auto errorOfReader = [&](bool whole) -> std::string {
+        Lead1PageReader r(dec, shorter, 0, "page");
+        try {
+          if (whole) {
+            std::vector<std::int32_t> all(p.size());
+            r.read(all);
+          } else {
+            for (std::size_t i = 0; i < p.size(); ++i) (void)r.next();
+          }
+        } catch (const StreamError& e) {
+          return e.what();
+        }
+        return "";
+      };
+      const std::string e = errorOfReader(false);
+      EXPECT_NE(e, "") << "cut " << cut;
+      EXPECT_EQ(errorOfReader(true), e) << "cut " << cut;
+    }
   }
 }
 

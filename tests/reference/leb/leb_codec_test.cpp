@@ -199,6 +199,32 @@ TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
     }
     EXPECT_GT(reader.cacheStats().hits, 0u);
     EXPECT_LE(reader.cacheStats().peakBytes, std::size_t{1} << 16);
+    // Both channels in one query, and the channels asked for in turn in every order (a memo entry
+    // that knows one channel gains the other), on a small memo that is emptied often.
+    LebReader both(s, 1 << 12);
+    for (int i = 0; i < 3000; ++i) {
+      const GridPoint p{static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
+                        static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
+                        static_cast<int>(rng() % static_cast<unsigned>(dims[2]))};
+      const std::size_t at = 3 * v.index(p[0], p[1], p[2]);
+      const std::array<std::int8_t, 3> want{g[at], g[at + 1], g[at + 2]};
+      switch (i % 3) {
+        case 0: {
+          const LebReader::SampleAndGradient sg = both.sampleAndGradient(p);
+          ASSERT_EQ(sg.sample, v.at(p[0], p[1], p[2]));
+          ASSERT_EQ(sg.gradient, want);
+          break;
+        }
+        case 1:
+          ASSERT_EQ(both.gradient(p), want);
+          ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
+          break;
+        default:
+          ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
+          ASSERT_EQ(both.gradient(p), want);
+          ASSERT_EQ(both.sampleAndGradient(p).gradient, want);
+      }
+    }
     // Whole pages: the points inside the volume equal the volume.
     const HzOrder order(s->grid);
     for (std::uint64_t page = 0; page < s->pageCount(); page += 7) {
