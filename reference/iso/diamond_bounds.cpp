@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
@@ -105,17 +106,19 @@ DiamondBounds parseDiamondBounds(std::string_view bytes) {
 }
 
 GridBox diamondBox(const LebGrid& grid, const GridPoint& p) {
-  const SplitEdge e = splitEdge(grid, p);
+  // Every phase's vertices reach p +- h on every axis (phase 2: the cube of side 2h around p;
+  // phase 1: the face square on its odd axes, the two cube centres on its even one; phase 0: the
+  // split edge, the face centres and the cube centres around it), and the ring is symmetric about
+  // p, so dropping the vertices outside the grid clips that box to the grid (leb_grid.h).
+  const LebPointClass c = classifyPoint(grid, p);
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  const int h = 1 << c.scaleLog2, side = grid.side();
   GridBox box{p, p};
-  auto add = [&](const GridPoint& q) {
-    for (int a = 0; a < 3; ++a) {
-      box.lo[a] = std::min(box.lo[a], q[a]);
-      box.hi[a] = std::max(box.hi[a], q[a]);
-    }
-  };
-  add(e.a);
-  add(e.b);
-  for (const GridPoint& r : diamondRing(grid, p)) add(r);
+  for (int a = 0; a < 3; ++a) {
+    box.lo[a] = std::max(0, p[a] - h);
+    box.hi[a] = std::min(side, p[a] + h);
+  }
   return box;
 }
 

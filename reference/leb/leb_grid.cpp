@@ -14,8 +14,8 @@ void requireInside(const LebGrid& g, const GridPoint& p) {
                                 "^3 grid");
 }
 
-void keepInside(const LebGrid& g, std::vector<GridPoint>& points) {
-  std::erase_if(points, [&](const GridPoint& q) { return !g.contains(q); });
+void keepInside(const LebGrid& g, DiamondPoints& points) {
+  points.keepIf([&](const GridPoint& q) { return g.contains(q); });
 }
 
 }  // namespace
@@ -60,7 +60,8 @@ LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
   c.scaleLog2 = s;
   for (int a = 0; a < 3; ++a)
     if ((p[a] >> s) & 1) c.oddAxes |= 1u << a;
-  const int odd = std::popcount(c.oddAxes);
+  constexpr int kBits[8] = {0, 1, 1, 2, 1, 2, 2, 3};  // popcount of the 3-bit mask, without a libgcc call
+  const int odd = kBits[c.oddAxes];
   c.phase = odd - 1;
   c.level = 3 * (g.k - 1 - s) + (3 - odd);
   return c;
@@ -73,13 +74,13 @@ SplitEdge splitEdge(const LebGrid& g, const GridPoint& p) {
   return splitEdgeOf(p, c.scaleLog2, c.oddAxes);
 }
 
-std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p) {
+DiamondPoints diamondRing(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
   if (c.level < 0)
     throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
-  const SplitEdge e = splitEdge(g, p);
-  std::vector<GridPoint> ring;
+  const SplitEdge e = splitEdgeOf(p, c.scaleLog2, c.oddAxes);
+  DiamondPoints ring;
   if (c.phase == 2) {
     // The other six corners of the cube of side 2h around p.
     for (int m = 0; m < 8; ++m) {
@@ -118,21 +119,21 @@ std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p) {
   return ring;
 }
 
-std::vector<GridPoint> diamondParents(const LebGrid& g, const GridPoint& p) {
+DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p) {
   const int level = classifyPoint(g, p).level;
-  std::vector<GridPoint> parents;
+  DiamondPoints parents;
   if (level == 0) return parents;  // the root diamond: its ring is root corners
   for (const GridPoint& q : diamondRing(g, p))
     if (classifyPoint(g, q).level == level - 1) parents.push_back(q);
   return parents;
 }
 
-std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p) {
+DiamondPoints diamondChildren(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
   if (c.level < 0)
     throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   const int h = 1 << c.scaleLog2;
-  std::vector<GridPoint> children;
+  DiamondPoints children;
   if (c.phase == 2 || c.phase == 1) {
     // Phase 2: the six face centres of the cube of side 2h; phase 1: the four edge midpoints of
     // the face square. Both: p +- h along each odd axis.

@@ -24,7 +24,9 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -101,13 +103,40 @@ SplitEdge splitEdge(const LebGrid& g, const GridPoint& p);
   return e;
 }
 
+// Up to eight grid points held in place: a diamond's ring, parents or children, which refinement
+// asks for millions of times a frame (a vector would allocate every time). Ranges over the points.
+class DiamondPoints {
+ public:
+  void push_back(const GridPoint& p) {
+    if (n_ == points_.size()) throw std::logic_error("DiamondPoints: more than eight points");
+    points_[n_++] = p;
+  }
+  const GridPoint* begin() const { return points_.data(); }
+  const GridPoint* end() const { return points_.data() + n_; }
+  std::size_t size() const { return n_; }
+  bool empty() const { return n_ == 0; }
+  const GridPoint& operator[](std::size_t i) const { return points_[i]; }
+  // Keeps the points for which keep(p) holds, in order.
+  template <class Keep>
+  void keepIf(Keep&& keep) {
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n_; ++i)
+      if (keep(points_[i])) points_[m++] = points_[i];
+    n_ = m;
+  }
+
+ private:
+  std::array<GridPoint, 8> points_{};
+  std::size_t n_ = 0;
+};
+
 // The vertices around the split edge (the other vertices of the diamond's tetrahedra), in the
 // full diamond; those outside the grid are dropped (a diamond on the boundary is a part diamond).
-std::vector<GridPoint> diamondRing(const LebGrid& g, const GridPoint& p);
+DiamondPoints diamondRing(const LebGrid& g, const GridPoint& p);
 // The diamonds whose splitting creates this diamond's tetrahedra: the ring vertices one level
 // coarser (3 for phase 2, 2 for phase 1, 4 for phase 0 inside the grid; none for the root).
-std::vector<GridPoint> diamondParents(const LebGrid& g, const GridPoint& p);
+DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p);
 // The diamonds whose tetrahedra splitting this diamond creates (6, 4, 8 inside the grid).
-std::vector<GridPoint> diamondChildren(const LebGrid& g, const GridPoint& p);
+DiamondPoints diamondChildren(const LebGrid& g, const GridPoint& p);
 
 }  // namespace voxref::ref

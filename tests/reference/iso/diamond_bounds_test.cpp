@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -117,6 +118,34 @@ TEST(DiamondBounds, SameForEveryThreadCount) {
 
 namespace voxref::ref {
 namespace {
+
+TEST(DiamondBox, IsTheBoxOfTheSplitVertexItsEdgeAndItsRing) {
+  // The closed form (p +- h clipped to the grid) against the box of the vertices themselves.
+  for (int k = 1; k <= 4; ++k) {
+    const LebGrid g = makeLebGrid(k);
+    for (int z = 0; z <= g.side(); ++z)
+      for (int y = 0; y <= g.side(); ++y)
+        for (int x = 0; x <= g.side(); ++x) {
+          const GridPoint p{x, y, z};
+          if (classifyPoint(g, p).level < 0) continue;
+          const SplitEdge e = splitEdge(g, p);
+          GridBox want{p, p};
+          const DiamondPoints ring = diamondRing(g, p);
+          std::vector<GridPoint> vertices(ring.begin(), ring.end());
+          vertices.push_back(e.a);
+          vertices.push_back(e.b);
+          for (const GridPoint& q : vertices)
+            for (int a = 0; a < 3; ++a) {
+              want.lo[a] = std::min(want.lo[a], q[a]);
+              want.hi[a] = std::max(want.hi[a], q[a]);
+            }
+          const GridBox got = diamondBox(g, p);
+          ASSERT_EQ(got.lo, want.lo) << "k " << k << " point " << pointText(p);
+          ASSERT_EQ(got.hi, want.hi) << "k " << k << " point " << pointText(p);
+        }
+  }
+  EXPECT_THROW(diamondBox(makeLebGrid(2), GridPoint{0, 0, 4}), std::invalid_argument);
+}
 
 TEST(DiamondBoundsFile, RoundTripsAndRefusesCorruption) {
   const Volume<std::uint16_t> v = test_support::ballVolume({20, 11, 17}, 9.0, 5.0, 7.0);

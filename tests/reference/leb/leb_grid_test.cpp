@@ -94,7 +94,10 @@ struct BruteForce {
   }
 };
 
-std::set<GridPoint> asSet(const std::vector<GridPoint>& v) { return {v.begin(), v.end()}; }
+template <class Points>
+std::set<GridPoint> asSet(const Points& v) {
+  return {v.begin(), v.end()};
+}
 
 class LebGridAgainstBisection : public ::testing::TestWithParam<int> {};
 
