@@ -53,6 +53,7 @@ std::vector<IsoScene> benchScenes(const BenchOptions& o) {
 
 struct Averages {
   double triangles = 0, diamonds = 0, tests = 0, culled = 0, frameSeconds = 0;
+  double queries = 0, refine = 0, extract = 0, gl = 0;  // the frame time's parts
   std::size_t falseCulls = 0;
 };
 
@@ -64,6 +65,10 @@ Averages average(const std::vector<IsoFrame>& frames) {
     a.tests += f.occlusionTests;
     a.culled += f.culled;
     a.frameSeconds += f.secondsQueries + f.secondsRefine + f.secondsExtract + f.secondsGl;
+    a.queries += f.secondsQueries;
+    a.refine += f.secondsRefine;
+    a.extract += f.secondsExtract;
+    a.gl += f.secondsGl;
     a.falseCulls += f.falseCulls;
   }
   const double n = frames.empty() ? 1.0 : static_cast<double>(frames.size());
@@ -72,6 +77,7 @@ Averages average(const std::vector<IsoFrame>& frames) {
   a.tests /= n;
   a.culled /= n;
   a.frameSeconds /= n;
+  for (double* part : {&a.queries, &a.refine, &a.extract, &a.gl}) *part /= n;
   return a;
 }
 
@@ -79,8 +85,9 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
   BenchTable t;
   t.id = "iso.table2";
   t.title = "Isosurfaces, Table 2 on this machine: per frame, with and without occlusion culling";
-  t.columns = {"data set (isovalue)", "culling", "triangles",   "leaf diamonds",
-               "occlusion tests",     "culled",  "false culls", "frame time"};
+  t.columns = {"data set (isovalue)", "culling",         "triangles",
+               "leaf diamonds",       "occlusion tests", "culled",
+               "false culls",         "frame time",      "queries / refine / extract / GL"};
   for (const IsoScene& s : scenes)
     for (const int mode : {0, 1, 2}) {
       IsoScene run = s;
@@ -95,7 +102,9 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
                                     : "paper + verification",
                         formatNumber("%.0f", a.triangles), formatNumber("%.0f", a.diamonds),
                         formatNumber("%.0f", a.tests), formatNumber("%.0f", a.culled), std::to_string(a.falseCulls),
-                        formatNumber("%.3f s", a.frameSeconds)});
+                        formatNumber("%.3f s", a.frameSeconds),
+                        formatNumber("%.3f / ", a.queries) + formatNumber("%.3f / ", a.refine) +
+                            formatNumber("%.3f / ", a.extract) + formatNumber("%.3f s", a.gl)});
       t.data["rows"].push_back(
           {{"data_set", s.name},
            {"isovalue", s.isovalue},
@@ -109,7 +118,11 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
            {"culled", a.culled},
            {"false_culls", a.falseCulls},
            {"false_culls_per_frame", static_cast<double>(a.falseCulls) / std::max(1, s.path.frames)},
-           {"frame_seconds", a.frameSeconds}});
+           {"frame_seconds", a.frameSeconds},
+           {"queries_seconds", a.queries},
+           {"refine_seconds", a.refine},
+           {"extract_seconds", a.extract},
+           {"gl_seconds", a.gl}});
     }
   t.notes = "Averages over the frames of a scripted orbit (" + std::to_string(scenes.front().path.frames) +
             " frames, " + std::to_string(scenes.front().camera.width) + "x" +

@@ -51,22 +51,16 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
                                               std::uint64_t page) {
   Lead1PageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
-  const std::uint64_t begin = page << s.pageBits;
-  // The positions of the page's points inside the volume, then their deltas in one run
-  // (Lead1PageReader::read), then the deltas in place.
-  std::vector<std::uint32_t> at;
-  at.reserve(std::size_t{1} << s.pageBits);
-  order.forEachInside(s.dims, begin, (page + 1) << s.pageBits,
-                      [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
-                        at.push_back(static_cast<std::uint32_t>(h - begin));
-                      });
-  std::vector<std::int32_t> deltas(at.size() * comps);
-  reader.read(deltas);
-  finishPage(reader, at.size(), c, page);
   std::vector<std::int16_t> out((std::size_t{1} << s.pageBits) * comps, 0);
-  for (std::size_t i = 0; i < at.size(); ++i)
-    for (std::size_t k = 0; k < comps; ++k)
-      out[static_cast<std::size_t>(at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
+  const std::uint64_t begin = page << s.pageBits;
+  std::uint64_t points = 0;
+  order.forEachInside(
+      s.dims, begin, (page + 1) << s.pageBits, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
+        ++points;
+        for (std::size_t k = 0; k < comps; ++k)
+          out[static_cast<std::size_t>(h - begin) * comps + k] = static_cast<std::int16_t>(reader.next());
+      });
+  finishPage(reader, points, c, page);
   return out;
 }
 

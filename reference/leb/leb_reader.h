@@ -13,8 +13,7 @@
 // reconstructed at most once per query. Bit-identical to decodeLeb.
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
-// at most 6 MiB: pageBits <= 20 is checked by parseLebStream, and its scratch, 2^pageBits x
-// (4 + 4 components) bytes, at most 16 MiB), plus the memo (about the budget
+// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo (about the budget
 // again: kMemoEntryBytes covers an entry of its table; beyond that, the entries of one query:
 // the points asked for and their coarser split-edge ancestors), plus reconstructPage's result,
 // 2^pageBits x components x 4 bytes (at most 12 MiB).
