@@ -24,11 +24,15 @@ IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const Diamo
     const bool hasDiamond = diamond[0] >= 0;
     if (bounds != nullptr && hasDiamond && !bounds->mayContain(diamond, isovalue)) return;
     ++s.tetrahedraRead;
-    std::array<TetCorner, 4> corners;
+    std::array<FieldSample, 4> f;
+    int inside = 0;  // corners at or above the isovalue: the builder's test (marching_tetrahedra.h)
     for (std::size_t k = 0; k < 4; ++k) {
-      const FieldSample f = field.at(t.v[k]);
-      corners[k] = {t.v[k], f.value, gradientVector(f.gradient)};
+      f[k] = field.at(t.v[k]);
+      inside += f[k].value >= isovalue ? 1 : 0;
     }
+    if (inside == 0 || inside == 4) return;  // no crossing: the builder would add nothing
+    std::array<TetCorner, 4> corners;
+    for (std::size_t k = 0; k < 4; ++k) corners[k] = {t.v[k], f[k].value, gradientVector(f[k].gradient)};
     if (hasDiamond && diamond != lastDiamond) {
       lastDiamond = diamond;
       lastId = static_cast<DiamondId>(order.index(diamond));
