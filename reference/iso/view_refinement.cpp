@@ -26,6 +26,15 @@ void ViewRefinement::Queue::insert(std::uint64_t id, double priority) {
   }
   heap_.emplace_back(priority, id);
   std::push_heap(heap_.begin(), heap_.end(), [this](const auto& a, const auto& b) { return before(a, b); });
+  compactIfStale();
+}
+
+void ViewRefinement::Queue::compactIfStale() {
+  if (heap_.size() <= 2 * size_ + 1024 && absent_ <= 2 * size_ + 1024) return;
+  std::vector<std::pair<double, std::uint64_t>> entries;
+  for (const auto& e : heap_)
+    if (live(e)) entries.push_back(e);
+  rebuild(std::move(entries));
 }
 
 void ViewRefinement::Queue::erase(std::uint64_t id) {
@@ -34,12 +43,7 @@ void ViewRefinement::Queue::erase(std::uint64_t id) {
   m->present = false;
   --size_;
   ++absent_;
-  if (heap_.size() > 2 * size_ + 1024 || absent_ > 2 * size_ + 1024) {
-    std::vector<std::pair<double, std::uint64_t>> entries;
-    for (const auto& e : heap_)
-      if (live(e)) entries.push_back(e);
-    rebuild(std::move(entries));
-  }
+  compactIfStale();
 }
 
 bool ViewRefinement::Queue::contains(std::uint64_t id) const {

@@ -92,6 +92,9 @@ class ViewRefinement {
     }
     bool live(const std::pair<double, std::uint64_t>& e) const;
     void rebuild(std::vector<std::pair<double, std::uint64_t>> entries);
+    // Rebuilds from the live entries when stale heap entries or absent ids outnumber the members
+    // (twice over, plus 1024): memory stays proportional to the members.
+    void compactIfStale();
     bool highestFirst_;
     std::size_t size_ = 0, absent_ = 0;  // members, and ids the index marks gone
     FlatU64Map<Member> index_;
