@@ -7,6 +7,7 @@
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
 #include "reference/common/parallel.h"
+#include "reference/iso/diamond_range.h"
 #include "reference/leb/hz_order.h"
 
 namespace voxref::ref {
@@ -19,39 +20,20 @@ DiamondBounds computeDiamondBounds(const LebGrid& grid, const std::vector<std::u
   b.max.assign(n, 0);
   b.error.assign(n, 0.0f);
   const HzOrder order(grid);
-  constexpr std::uint64_t kChunk = 1u << 14;
-  for (int level = grid.levelCount() - 1; level >= 0; --level) {
-    const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
-    const int chunks = static_cast<int>((end - begin + kChunk - 1) / kChunk);
-    parallelFor(chunks, threads, [&](int chunk) {
-      const std::uint64_t first = begin + static_cast<std::uint64_t>(chunk) * kChunk;
-      const std::uint64_t last = std::min(end, first + kChunk);
-      HzCursor c(order, first);
-      for (; c.index() < last; c.next()) {
-        const GridPoint& p = c.point();
-        const std::uint64_t i = grid.linearIndex(p);
-        const SplitEdge e = splitEdgeOf(p, c.scaleLog2(), c.oddAxes());
-        const int va = values[grid.linearIndex(e.a)], vb = values[grid.linearIndex(e.b)], vp = values[i];
-        int lo = std::min({va, vb, vp}), hi = std::max({va, vb, vp});
-        for (const GridPoint& r : diamondRing(grid, p)) {
-          const int v = values[grid.linearIndex(r)];
-          lo = std::min(lo, v);
-          hi = std::max(hi, v);
-        }
-        float err = static_cast<float>(std::abs(2 * vp - va - vb)) / 2.0f;
-        if (level + 1 < grid.levelCount())
-          for (const GridPoint& child : diamondChildren(grid, p)) {
-            const std::uint64_t j = grid.linearIndex(child);
-            lo = std::min<int>(lo, b.min[j]);
-            hi = std::max<int>(hi, b.max[j]);
-            err = std::max(err, b.error[j]);
-          }
-        b.min[i] = static_cast<std::uint16_t>(lo);
-        b.max[i] = static_cast<std::uint16_t>(hi);
-        b.error[i] = err;
-      }
-    });
-  }
+  forLevelsFinestFirst(order, grid.levelCount() - 1, threads, [&](const HzCursor& c, int level) {
+    const GridPoint& p = c.point();
+    const DiamondRange r = foldDiamond(
+        grid, p, c.scaleLog2(), c.oddAxes(), level + 1 < grid.levelCount(),
+        [&](const GridPoint& q) { return static_cast<int>(values[grid.linearIndex(q)]); },
+        [&](const GridPoint& q) {
+          const std::uint64_t j = grid.linearIndex(q);
+          return DiamondRange{b.min[j], b.max[j], b.error[j]};
+        });
+    const std::uint64_t i = grid.linearIndex(p);
+    b.min[i] = static_cast<std::uint16_t>(r.min);
+    b.max[i] = static_cast<std::uint16_t>(r.max);
+    b.error[i] = r.error;
+  });
   return b;
 }
 

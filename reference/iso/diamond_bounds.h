@@ -24,16 +24,29 @@
 
 namespace voxref::ref {
 
-struct DiamondBounds {
+// What refinement and extraction ask of the bounds, however they are held: the full table
+// (DiamondBounds) or a table of the coarser diamonds with the finest computed on demand
+// (tiered_bounds.h). Both give the same answers for the same field, bit for bit.
+class DiamondRanges {
+ public:
+  virtual ~DiamondRanges() = default;
+  virtual const LebGrid& lebGrid() const = 0;
+  // Whether min(p) <= isovalue <= max(p): the diamond may hold the surface.
+  virtual bool mayContain(const GridPoint& p, double isovalue) const = 0;
+  virtual float errorOf(const GridPoint& p) const = 0;
+};
+
+struct DiamondBounds final : DiamondRanges {
   LebGrid grid;
   std::vector<std::uint16_t> min, max;
   std::vector<float> error;
 
-  bool mayContain(const GridPoint& p, double isovalue) const {
+  const LebGrid& lebGrid() const override { return grid; }
+  bool mayContain(const GridPoint& p, double isovalue) const override {
     const std::uint64_t i = grid.linearIndex(p);
     return min[i] <= isovalue && isovalue <= max[i];
   }
-  float errorOf(const GridPoint& p) const { return error[grid.linearIndex(p)]; }
+  float errorOf(const GridPoint& p) const override { return error[grid.linearIndex(p)]; }
 };
 
 // Values of a dense field only (it reads every point): DenseGridField::values().

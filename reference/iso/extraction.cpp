@@ -6,11 +6,11 @@
 
 namespace voxref::ref {
 
-IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondBounds* bounds, double isovalue,
+IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondRanges* bounds, double isovalue,
                           ExtractionStats* stats) {
   const LebGrid& grid = mesh.grid();
   if (field.grid().k != grid.k) throw std::invalid_argument("extraction: the field's grid and the mesh's grid differ");
-  if (bounds != nullptr && bounds->grid.k != grid.k)
+  if (bounds != nullptr && bounds->lebGrid().k != grid.k)
     throw std::invalid_argument("extraction: the bounds' grid and the mesh's grid differ");
   const Dims3& dims = field.volumeDims();
   IsoMeshBuilder builder(grid, isovalue, {dims[0] - 1, dims[1] - 1, dims[2] - 1});

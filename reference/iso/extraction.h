@@ -26,7 +26,7 @@ struct ExtractionStats {
 
 // bounds may be null (every tetrahedron is read). Throws std::invalid_argument when the field's
 // grid is not the mesh's.
-IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondBounds* bounds, double isovalue,
+IsoMesh extractIsosurface(const DiamondMesh& mesh, GridField& field, const DiamondRanges* bounds, double isovalue,
                           ExtractionStats* stats = nullptr);
 
 }  // namespace voxref::ref

@@ -88,20 +88,20 @@ void ViewRefinement::Queue::reprioritise(const std::function<double(std::uint64_
   rebuild(std::move(entries));
 }
 
-ViewRefinement::ViewRefinement(const DiamondBounds& bounds, double isovalue)
-    : bounds_(&bounds), isovalue_(isovalue), mesh_(bounds.grid) {
-  if (bounds.grid.k >= 1) {
-    const int h = bounds.grid.side() / 2;
-    split_.insert(bounds.grid.linearIndex({h, h, h}), 0.0);  // the root diamond
+ViewRefinement::ViewRefinement(const DiamondRanges& bounds, double isovalue)
+    : bounds_(&bounds), isovalue_(isovalue), mesh_(bounds.lebGrid()) {
+  if (bounds.lebGrid().k >= 1) {
+    const int h = bounds.lebGrid().side() / 2;
+    split_.insert(bounds.lebGrid().linearIndex({h, h, h}), 0.0);  // the root diamond
   }
 }
 
-GridPoint ViewRefinement::pointOf(std::uint64_t id) const { return bounds_->grid.pointAt(id); }
+GridPoint ViewRefinement::pointOf(std::uint64_t id) const { return bounds_->lebGrid().pointAt(id); }
 
 double ViewRefinement::priority(const GridPoint& d) const {
   if (!bounds_->mayContain(d, isovalue_)) return 0.0;
   if (occluded_ && occluded_(d)) return 0.0;
-  const GridBox box = diamondBox(bounds_->grid, d);
+  const GridBox box = diamondBox(bounds_->lebGrid(), d);
   const glm::dvec3 lo(box.lo[0], box.lo[1], box.lo[2]), hi(box.hi[0], box.hi[1], box.hi[2]);
   const double radius = 0.5 * glm::length(hi - lo);
   const double distance = glm::length(glm::dvec3(d[0], d[1], d[2]) - camera_.eye);
@@ -111,13 +111,13 @@ double ViewRefinement::priority(const GridPoint& d) const {
 
 void ViewRefinement::addIfLeaf(const GridPoint& c) {
   if (mesh_.isSplit(c)) return;
-  for (const GridPoint& p : diamondParents(bounds_->grid, c))
+  for (const GridPoint& p : diamondParents(bounds_->lebGrid(), c))
     if (!mesh_.isSplit(p)) return;
-  split_.insert(bounds_->grid.linearIndex(c), priority(c));
+  split_.insert(bounds_->lebGrid().linearIndex(c), priority(c));
 }
 
 void ViewRefinement::afterSplit(const GridPoint& q) {
-  const LebGrid& g = bounds_->grid;
+  const LebGrid& g = bounds_->lebGrid();
   split_.erase(g.linearIndex(q));
   for (const GridPoint& p : diamondParents(g, q)) merge_.erase(g.linearIndex(p));
   merge_.insert(g.linearIndex(q), priority(q));
@@ -125,7 +125,7 @@ void ViewRefinement::afterSplit(const GridPoint& q) {
 }
 
 void ViewRefinement::afterMerge(const GridPoint& d) {
-  const LebGrid& g = bounds_->grid;
+  const LebGrid& g = bounds_->lebGrid();
   merge_.erase(g.linearIndex(d));
   for (const GridPoint& c : diamondChildren(g, d)) split_.erase(g.linearIndex(c));
   split_.insert(g.linearIndex(d), priority(d));

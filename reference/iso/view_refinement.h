@@ -46,7 +46,7 @@ struct RefinementStats {
 class ViewRefinement {
  public:
   // The bounds must outlive the refinement.
-  ViewRefinement(const DiamondBounds& bounds, double isovalue);
+  ViewRefinement(const DiamondRanges& bounds, double isovalue);
 
   const DiamondMesh& mesh() const { return mesh_; }
   double isovalue() const { return isovalue_; }
@@ -105,7 +105,7 @@ class ViewRefinement {
   void afterMerge(const GridPoint& d);
   void addIfLeaf(const GridPoint& c);
 
-  const DiamondBounds* bounds_;
+  const DiamondRanges* bounds_;
   double isovalue_;
   DiamondMesh mesh_;
   Queue split_{true}, merge_{false};

@@ -9,7 +9,7 @@
 
 namespace voxref::conf {
 
-ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field,
+ThresholdSurface extractAtThreshold(const ref::DiamondRanges& bounds, ref::GridField& field,
                                     const ref::ViewCamera& camera, double isovalue, double thresholdPx) {
   ref::ViewRefinement refinement(bounds, isovalue);
   ref::RefinementBudget budget;

@@ -26,7 +26,7 @@ struct ThresholdSurface {
 // isovalue projects an error under `thresholdPx` pixels (no split budget beyond the refinement's
 // default), then extracts the isosurface of its leaves from `field`. Throws what the reference
 // layers throw.
-ThresholdSurface extractAtThreshold(const ref::DiamondBounds& bounds, ref::GridField& field,
+ThresholdSurface extractAtThreshold(const ref::DiamondRanges& bounds, ref::GridField& field,
                                     const ref::ViewCamera& camera, double isovalue, double thresholdPx);
 
 // A ray-cast image of an extracted surface against the exact one, same camera and size:
