@@ -51,36 +51,6 @@ std::vector<IsoScene> benchScenes(const BenchOptions& o) {
   return scenes;
 }
 
-struct Averages {
-  double triangles = 0, diamonds = 0, tests = 0, culled = 0, frameSeconds = 0;
-  double queries = 0, refine = 0, extract = 0, gl = 0;  // the frame time's parts
-  std::size_t falseCulls = 0;
-};
-
-Averages average(const std::vector<IsoFrame>& frames) {
-  Averages a;
-  for (const IsoFrame& f : frames) {
-    a.triangles += f.triangles;
-    a.diamonds += f.refinement.splitQueue;
-    a.tests += f.occlusionTests;
-    a.culled += f.culled;
-    a.frameSeconds += f.secondsQueries + f.secondsRefine + f.secondsExtract + f.secondsGl;
-    a.queries += f.secondsQueries;
-    a.refine += f.secondsRefine;
-    a.extract += f.secondsExtract;
-    a.gl += f.secondsGl;
-    a.falseCulls += f.falseCulls;
-  }
-  const double n = frames.empty() ? 1.0 : static_cast<double>(frames.size());
-  a.triangles /= n;
-  a.diamonds /= n;
-  a.tests /= n;
-  a.culled /= n;
-  a.frameSeconds /= n;
-  for (double* part : {&a.queries, &a.refine, &a.extract, &a.gl}) *part /= n;
-  return a;
-}
-
 BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<IsoScene>& scenes) {
   BenchTable t;
   t.id = "iso.table2";
@@ -95,7 +65,7 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
       run.verifyCulls = mode == 2;
       IsoRunOptions options;
       options.threads = o.threads;
-      const Averages a = average(runIsoFrames(gl, run, options));
+      const IsoFrameAverages a = averageIsoFrames(runIsoFrames(gl, run, options));
       t.rows.push_back({s.name + " (" + formatNumber("%.0f", s.isovalue) + ")",
                         mode == 0   ? "no"
                         : mode == 1 ? "paper (previous frame)"
@@ -278,7 +248,32 @@ BenchTable study(const BenchOptions& o, const std::vector<IsoScene>& scenes) {
 
 }  // namespace
 
-std::vector<std::string> isoBenchIds() { return {"iso.table2", "iso.extraction", "study.iso"}; }
+IsoFrameAverages averageIsoFrames(const std::vector<IsoFrame>& frames) {
+  IsoFrameAverages a;
+  for (const IsoFrame& f : frames) {
+    a.triangles += f.triangles;
+    a.diamonds += f.refinement.splitQueue;
+    a.tests += f.occlusionTests;
+    a.culled += f.culled;
+    a.frameSeconds += f.secondsQueries + f.secondsRefine + f.secondsExtract + f.secondsGl;
+    a.queries += f.secondsQueries;
+    a.refine += f.secondsRefine;
+    a.extract += f.secondsExtract;
+    a.gl += f.secondsGl;
+    a.embree += f.secondsEmbree;
+    a.falseCulls += f.falseCulls;
+  }
+  const double n = frames.empty() ? 1.0 : static_cast<double>(frames.size());
+  a.triangles /= n;
+  a.diamonds /= n;
+  a.tests /= n;
+  a.culled /= n;
+  a.frameSeconds /= n;
+  for (double* part : {&a.queries, &a.refine, &a.extract, &a.gl, &a.embree}) *part /= n;
+  return a;
+}
+
+std::vector<std::string> isoBenchIds() { return {"iso.table2", "iso.extraction", "study.iso", kIsoScaleBenchId}; }
 
 std::vector<BenchTable> isoBench(const BenchOptions& o, gpu::Context& gl) {
   bool any = false;
@@ -289,6 +284,7 @@ std::vector<BenchTable> isoBench(const BenchOptions& o, gpu::Context& gl) {
   if (globMatch(o.filter, "iso.table2")) tables.push_back(table2(o, gl, scenes));
   if (globMatch(o.filter, "iso.extraction")) tables.push_back(extraction(o, scenes));
   if (globMatch(o.filter, "study.iso")) tables.push_back(study(o, scenes));
+  if (globMatch(o.filter, kIsoScaleBenchId)) tables.push_back(isoScaleBench(o, gl));
   return tables;
 }
 

@@ -76,11 +76,16 @@ std::vector<std::array<double, 3>> makeBuckyballVertices() {
 
 // Gaussian "atoms" of width 0.03 at the C60 vertices, on a sphere of radius 0.35 around the
 // cube's centre.
+constexpr double kBuckyRadius = 0.35, kBuckySigma = 0.03;
+double buckyScale() {
+  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
+  return kBuckyRadius / std::sqrt(9.0 * phi + 10.0);
+}
+
 double gaussianBuckyball(double x, double y, double z) {
   static const std::vector<std::array<double, 3>> vertices = makeBuckyballVertices();
-  constexpr double kRadius = 0.35, kSigma = 0.03;
-  const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  const double scale = kRadius / std::sqrt(9.0 * phi + 10.0);
+  constexpr double kSigma = kBuckySigma;
+  const double scale = buckyScale();
   double sum = 0.0;
   for (const auto& v : vertices) {
     const double dx = x - 0.5 - scale * v[0], dy = y - 0.5 - scale * v[1], dz = z - 0.5 - scale * v[2];
@@ -172,6 +177,42 @@ Volume<std::uint8_t> sampleFieldU8(const Field& field, const Dims3& dims) {
         v.at(x, y, z) = static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(f, 0.0, 1.0)));
       }
   return v;
+}
+
+void sampleGaussianBuckyballSliceU8(const Dims3& dims, int z, std::uint8_t* out) {
+  const std::vector<std::array<double, 3>> vertices = makeBuckyballVertices();
+  const double scale = buckyScale();
+  auto coord = [](int i, int n) { return n > 1 ? static_cast<double>(i) / (n - 1) : 0.5; };
+  auto quantize = [](double f) { return std::lround(255.0 * std::clamp(f, 0.0, 1.0)); };
+  // Atoms beyond kNear contribute less than exp(-kNear^2 / (2 sigma^2)) each; kSlack covers how
+  // differently the two sums round (distances rounded apart by 1e-16 move a term by below 1e-13,
+  // 60 terms below 1e-11) with room to spare.
+  constexpr double kNear = 0.2, kSlack = 1e-9;
+  const double farBound = 60.0 * std::exp(-kNear * kNear / (2.0 * kBuckySigma * kBuckySigma));
+  const double cz = coord(z, dims[2]);
+  std::vector<std::array<double, 3>> row;  // atom centres near the row
+  for (int y = 0; y < dims[1]; ++y) {
+    const double cy = coord(y, dims[1]);
+    row.clear();
+    for (const auto& v : vertices) {
+      const double ay = 0.5 + scale * v[1], az = 0.5 + scale * v[2];
+      if ((cy - ay) * (cy - ay) + (cz - az) * (cz - az) <= kNear * kNear) row.push_back({0.5 + scale * v[0], ay, az});
+    }
+    for (int x = 0; x < dims[0]; ++x) {
+      const double cx = coord(x, dims[0]);
+      double near = 0.0;
+      for (const auto& a : row) {
+        const double dx = cx - a[0], dy = cy - a[1], dz = cz - a[2];
+        const double d2 = dx * dx + dy * dy + dz * dz;
+        if (d2 <= kNear * kNear) near += std::exp(-d2 / (2.0 * kBuckySigma * kBuckySigma));
+      }
+      // The whole sum lies in [near, near + farBound] up to rounding: where both ends round alike,
+      // so does it (rounding is monotone).
+      const long lo = quantize(near - kSlack), hi = quantize(near + farBound + kSlack);
+      out[static_cast<std::size_t>(x) + static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(y)] =
+          static_cast<std::uint8_t>(lo == hi ? lo : quantize(gaussianBuckyball(cx, cy, cz)));
+    }
+  }
 }
 
 }  // namespace voxref::ref

@@ -56,6 +56,12 @@ std::vector<std::array<double, 3>> buckyballVertices();
 // an axis of one sample), stored as round(255 f) with f clamped to [0, 1].
 Volume<std::uint8_t> sampleFieldU8(const Field& field, const Dims3& dims);
 
+// Slice z of sampleFieldU8(analyticField("gaussian_buckyball"), dims), bit for bit, into
+// out[x + X y], several times faster: a sample is decided from the atoms within 0.2 of it when
+// the bound on the others (60 exp(-0.2^2 / (2 sigma^2)) < 1.5e-8) cannot move its rounding, and
+// from the whole sum otherwise. For volumes too large to sample in memory (a 1025^3 buckyball).
+void sampleGaussianBuckyballSliceU8(const Dims3& dims, int z, std::uint8_t* out);
+
 // The trilinear interpolant of `volume` (values scaled by `scale`, e.g. 1/255 for uint8).
 // The volume must have at least 2 samples per axis. The field shares ownership of the data.
 Field volumeField(std::string name, std::shared_ptr<const Volume<std::uint8_t>> volume, double scale);

@@ -36,13 +36,21 @@ gpu::QueryBox queryBox(const ref::LebGrid& g, const ref::GridPoint& d, const ref
 std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, const IsoRunOptions& options) {
   const ref::Volume<std::uint16_t> volume = isoSceneVolume(scene);
   ref::DenseGridField dense(volume, ref::quantizedGradients(volume));
-  const ref::LebGrid grid = dense.grid();
-  const ref::DiamondBounds bounds = ref::computeDiamondBounds(grid, dense.values(), options.threads);
+  const ref::DiamondBounds bounds = ref::computeDiamondBounds(dense.grid(), dense.values(), options.threads);
   // The stream's sample width: 8 bits when every voxel fits (the built-in scenes, uint8 volumes),
   // else 16 (a user's uint16 volume); lossless either way (reference/leb/FORMAT.md).
   const bool fits8 = std::all_of(volume.data().begin(), volume.data().end(), [](std::uint16_t v) { return v <= 255; });
   auto stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(ref::encodeLeb(volume, fits8 ? 8 : 16)));
   ref::CompressedGridField field(stream, std::size_t{64} << 20);
+  return runIsoFrames(gl, scene, field, bounds, options);
+}
+
+std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref::CompressedGridField& field,
+                                   const ref::DiamondRanges& bounds, const IsoRunOptions& options) {
+  const ref::LebGrid grid = field.grid();
+  if (bounds.lebGrid().k != grid.k)
+    throw std::invalid_argument("isosurface frames: the bounds' grid is not the stream's");
+  const ref::Dims3 dims = field.volumeDims();
   const ref::HzOrder order(grid);
 
   double iso = scene.isovalue;
@@ -67,7 +75,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
     auto isCulled = [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; };
     auto queryDiamonds = [&](const ref::IsoMesh& occluder, const std::vector<ref::GridPoint>& diamonds) {
       std::vector<gpu::QueryBox> boxes;
-      for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, volume.dims()));
+      for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, dims));
       return gpu::occlusionQueriesGl(gl, occluder, boxes, fr.camera);
     };
     auto refineAndExtract = [&] {

@@ -23,6 +23,8 @@
 #include "fixtures/raycast/ray_image.h"
 #include "gpu/context.h"
 #include "gpu/iso_gl.h"
+#include "reference/iso/diamond_bounds.h"
+#include "reference/iso/grid_field.h"
 #include "reference/iso/iso_mesh.h"
 
 namespace voxref::conf {
@@ -55,5 +57,11 @@ struct IsoRunOptions {
 
 // Throws what the layers throw (GL errors, Embree errors, invalid scenes).
 std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, const IsoRunOptions& options);
+// The same frames from a stream already made and its bounds (the full table, or tiered bounds
+// over this field): the scene gives the isovalue, orbit, camera, budget and culling, not the
+// volume. For volumes too large to hold (the bounds and the field's caches are all it keeps).
+// Throws std::invalid_argument when the bounds' grid is not the field's.
+std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref::CompressedGridField& field,
+                                   const ref::DiamondRanges& bounds, const IsoRunOptions& options);
 
 }  // namespace voxref::conf

@@ -44,5 +44,24 @@ TEST(GaussianBuckyball, AtomsAreBrightAndTheCentreIsEmpty) {
   EXPECT_EQ(s.at(8, 8, 8), 0);
 }
 
+TEST(GaussianBuckyball, SlicesSampledFastEqualTheWholeSum) {
+  const Field f = analyticField("gaussian_buckyball");
+  for (const Dims3& d : {Dims3{129, 129, 129}, Dims3{40, 23, 31}, Dims3{1, 1, 1}}) {
+    const Volume<std::uint8_t> want = sampleFieldU8(f, d);
+    std::vector<std::uint8_t> slice(static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]));
+    int bright = 0;
+    for (int z = 0; z < d[2]; ++z) {
+      sampleGaussianBuckyballSliceU8(d, z, slice.data());
+      for (int y = 0; y < d[1]; ++y)
+        for (int x = 0; x < d[0]; ++x) {
+          const std::uint8_t got = slice[static_cast<std::size_t>(x + d[0] * y)];
+          ASSERT_EQ(got, want.at(x, y, z)) << x << " " << y << " " << z << " of " << dimsText(d);
+          bright += got > 128 ? 1 : 0;
+        }
+    }
+    if (d[0] > 1) EXPECT_GT(bright, 0);
+  }
+}
+
 }  // namespace
 }  // namespace voxref::ref
