@@ -24,7 +24,7 @@
 
 namespace voxref::conf {
 
-inline constexpr const char* kFixtureGenerator = "voxref 0.1.0 iso fixtures 1";
+inline constexpr const char* kFixtureGenerator = "voxref 0.1.0 iso fixtures 2";
 
 // Writes the fixtures and the manifest; returns the manifest. Every scene is validated first
 // (validateIsoScene; std::invalid_argument naming the scene), and everything is made in a staging
