@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 
@@ -101,8 +102,24 @@ std::uint64_t residentBytes() {
   return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
+ResidentWindow::ResidentWindow(std::uint64_t budget, std::vector<MappedFile*> mappings)
+    : budget_(budget), mappings_(std::move(mappings)) {
+  watcher_ = std::jthread([this](std::stop_token stop) {
+    while (!stop.stop_requested()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(kResidentWindowPollMs));
+      (*this)();
+    }
+  });
+}
+
+ResidentWindow::~ResidentWindow() {
+  watcher_.request_stop();
+  if (watcher_.joinable()) watcher_.join();
+}
+
 void ResidentWindow::operator()() {
   if (residentBytes() <= budget_) return;
+  const std::lock_guard<std::mutex> lock(mutex_);
   for (MappedFile* m : mappings_) m->trim();
   ++trims_;
 }
