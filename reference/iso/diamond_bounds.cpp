@@ -16,23 +16,15 @@ DiamondBounds computeDiamondBounds(const LebGrid& grid, const std::vector<std::u
   DiamondBounds b;
   b.grid = grid;
   const std::uint64_t n = grid.pointCount();
-  b.min.assign(n, 0);
-  b.max.assign(n, 0);
-  b.error.assign(n, 0.0f);
+  b.assign(n);
   const HzOrder order(grid);
   forLevelsFinestFirst(order, grid.levelCount() - 1, threads, [&](const HzCursor& c, int level) {
     const GridPoint& p = c.point();
     const DiamondRange r = foldDiamond(
         grid, p, c.scaleLog2(), c.oddAxes(), level + 1 < grid.levelCount(),
         [&](const GridPoint& q) { return static_cast<int>(values[grid.linearIndex(q)]); },
-        [&](const GridPoint& q) {
-          const std::uint64_t j = grid.linearIndex(q);
-          return DiamondRange{b.min[j], b.max[j], b.error[j]};
-        });
-    const std::uint64_t i = grid.linearIndex(p);
-    b.min[i] = static_cast<std::uint16_t>(r.min);
-    b.max[i] = static_cast<std::uint16_t>(r.max);
-    b.error[i] = r.error;
+        [&](const GridPoint& q) { return b.at(grid.linearIndex(q)); });
+    b.store(grid.linearIndex(p), r);
   });
   return b;
 }

@@ -20,6 +20,7 @@
 #include <string_view>
 #include <vector>
 
+#include "reference/iso/diamond_range.h"
 #include "reference/iso/grid_field.h"
 
 namespace voxref::ref {
@@ -36,10 +37,9 @@ class DiamondRanges {
   virtual float errorOf(const GridPoint& p) const = 0;
 };
 
-struct DiamondBounds final : DiamondRanges {
+// Entries indexed by LebGrid::linearIndex.
+struct DiamondBounds final : DiamondRanges, DiamondRangeTable {
   LebGrid grid;
-  std::vector<std::uint16_t> min, max;
-  std::vector<float> error;
 
   const LebGrid& lebGrid() const override { return grid; }
   bool mayContain(const GridPoint& p, double isovalue) const override {

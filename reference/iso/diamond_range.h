@@ -32,6 +32,26 @@ struct DiamondRange {
   float error = 0.0f;  // a multiple of one half, exact
 };
 
+// Entries stored 8 bytes each, 16-bit min and max and the error: the layout of the full table
+// (diamond_bounds.h) and of the coarse one (tiered_bounds.h), indexed as each of them says.
+struct DiamondRangeTable {
+  std::vector<std::uint16_t> min, max;
+  std::vector<float> error;
+
+  void assign(std::uint64_t entries) {
+    min.assign(entries, 0);
+    max.assign(entries, 0);
+    error.assign(entries, 0.0f);
+  }
+  DiamondRange at(std::uint64_t i) const { return {min[i], max[i], error[i]}; }
+  // r.min and r.max are values of a 16-bit field.
+  void store(std::uint64_t i, const DiamondRange& r) {
+    min[i] = static_cast<std::uint16_t>(r.min);
+    max[i] = static_cast<std::uint16_t>(r.max);
+    error[i] = r.error;
+  }
+};
+
 // The entry of diamond p (scale 2^scaleLog2, odd axes oddAxes; children when hasChildren) from
 // the values at its split vertex, split-edge endpoints and ring and its children's entries
 // (childRange(q)): the rule of diamond_bounds.h, for every way the entries are held.

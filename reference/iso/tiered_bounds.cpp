@@ -18,9 +18,7 @@ CoarseDiamondBounds computeCoarse(const LebGrid& grid, std::span<const T> values
   CoarseDiamondBounds b;
   b.grid = grid;
   const auto n = static_cast<std::uint64_t>(b.halfPointsPerAxis());
-  b.min.assign(n * n * n, 0);
-  b.max.assign(n * n * n, 0);
-  b.error.assign(n * n * n, 0.0f);
+  b.assign(n * n * n);
   // The finest scale fills the last three levels (leb_grid.h: level 3 (k - 1 - s) + 2 - phase).
   const int stored = grid.levelCount() - 4;
   if (stored < 0) return b;
@@ -32,13 +30,9 @@ CoarseDiamondBounds computeCoarse(const LebGrid& grid, std::span<const T> values
         const GridPoint& p = c.point();
         const DiamondRange r = foldDiamond(grid, p, c.scaleLog2(), c.oddAxes(), true, valueAt, [&](const GridPoint& q) {
           if (isFinest(q)) return finestDiamondRange(grid, q, valueAt);
-          const std::uint64_t j = b.indexOf(q);
-          return DiamondRange{b.min[j], b.max[j], b.error[j]};
+          return b.at(b.indexOf(q));
         });
-        const std::uint64_t i = b.indexOf(p);
-        b.min[i] = static_cast<std::uint16_t>(r.min);
-        b.max[i] = static_cast<std::uint16_t>(r.max);
-        b.error[i] = r.error;
+        b.store(b.indexOf(p), r);
       },
       progress);
   return b;
@@ -65,10 +59,7 @@ TieredDiamondBounds::TieredDiamondBounds(const CoarseDiamondBounds& coarse, Grid
 }
 
 DiamondRange TieredDiamondBounds::rangeOf(const GridPoint& p) const {
-  if (!isFinest(p)) {
-    const std::uint64_t j = coarse_->indexOf(p);
-    return {coarse_->min[j], coarse_->max[j], coarse_->error[j]};
-  }
+  if (!isFinest(p)) return coarse_->at(coarse_->indexOf(p));
   const std::uint64_t key = coarse_->grid.linearIndex(p);
   Memo& m = memo_[key & mask_];
   if (m.key != key) {

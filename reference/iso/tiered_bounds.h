@@ -25,10 +25,8 @@ namespace voxref::ref {
 // The table part: entries of the points with even coordinates, indexed by the linear index of
 // p / 2 in a grid of side 2^(k-1) (computeDiamondBounds's entries at those points; the root
 // corners hold zeros).
-struct CoarseDiamondBounds {
+struct CoarseDiamondBounds : DiamondRangeTable {
   LebGrid grid;
-  std::vector<std::uint16_t> min, max;
-  std::vector<float> error;
 
   int halfPointsPerAxis() const { return grid.side() / 2 + 1; }
   std::uint64_t indexOf(const GridPoint& p) const {

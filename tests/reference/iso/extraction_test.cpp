@@ -2,23 +2,18 @@
 // bit, and decodes only some of the pages; skipping by the bounds changes nothing.
 #include "reference/iso/extraction.h"
 
-#include <cstring>
-
 #include <gtest/gtest.h>
 
 #include "reference/iso/view_refinement.h"
 #include "reference/leb/leb_codec.h"
 #include "reference/leb/leb_stream.h"
+#include "tests/reference/iso/iso_mesh_checks.h"
 #include "tests/reference/iso/iso_test_fields.h"
 
 namespace voxref::ref {
 namespace {
 
-bool sameMesh(const IsoMesh& a, const IsoMesh& b) {
-  return a.indices == b.indices && a.triangleDiamond == b.triangleDiamond && a.positions.size() == b.positions.size() &&
-         std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0 &&
-         std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)) == 0;
-}
+using test_support::sameMesh;
 
 TEST(Extraction, FromTheCompressedStreamEqualsTheUncompressedGridAndDecodesFewerPages) {
   // Not a grid cube, so the padding and the clipping take part.
