@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "conformance/bench/baselines.h"
+#include "conformance/bench/leb_coder_bench.h"
+#include "conformance/bench/leb_datasets.h"
 #include "conformance/bench/leb_scale_bench.h"
 #include "conformance/bench/study.h"
 #include "conformance/framework/progress.h"
@@ -21,89 +23,6 @@
 
 namespace voxref::conf {
 namespace {
-
-struct LebDataset {
-  std::string name;
-  std::string missing;  // why the data set could not be made (a file is missing)
-  ref::Volume<std::uint16_t> volume;
-  int bits = 8;
-  std::string paper[3];  // Table 1: Data+G, Data, Grad
-};
-
-// The paper's resampling of the engine to 256^3 ("resampled to 256^3 with the cell aspect ratios
-// appropriately adjusted at runtime"), as voxref makes it: the original slices at even z, and at
-// odd z the rounded-down mean of the slices around (the last slice repeated). The inserted slices
-// are exactly what the split-edge predictor predicts along z, which is why this volume compresses
-// better than the one as stored.
-ref::Volume<std::uint8_t> doubleSlices(const ref::Volume<std::uint8_t>& v) {
-  const ref::Dims3 d = v.dims();
-  ref::Volume<std::uint8_t> out({d[0], d[1], 2 * d[2]});
-  for (int z = 0; z < 2 * d[2]; ++z)
-    for (int y = 0; y < d[1]; ++y)
-      for (int x = 0; x < d[0]; ++x) {
-        const int lo = z / 2, hi = std::min(lo + 1, d[2] - 1);
-        out.at(x, y, z) =
-            z % 2 == 0 ? v.at(x, y, lo) : static_cast<std::uint8_t>((v.at(x, y, lo) + v.at(x, y, hi)) / 2);
-      }
-  return out;
-}
-
-LebDataset shared(const BenchOptions& o, const std::string& name, const std::string& file, const ref::Dims3& dims,
-                  bool doubled = false) {
-  LebDataset d;
-  d.name = name;
-  const std::filesystem::path path = benchVolumes(o) / file;
-  if (!std::filesystem::exists(path)) {
-    d.missing = path.string() + " is missing (give the folder with --volumes)";
-    return d;
-  }
-  const ref::Volume<std::uint8_t> v = io::readRawVolumeU8(path, dims);
-  d.volume = ref::widenToU16(doubled ? doubleSlices(v) : v);
-  return d;
-}
-
-LebDataset buckyball(int side) {
-  LebDataset d;
-  d.name = "Gaussian buckyball " + std::to_string(side) + "^3 (synthetic)";
-  d.volume = ref::widenToU16(ref::sampleFieldU8(ref::analyticField("gaussian_buckyball"), {side, side, side}));
-  return d;
-}
-
-std::vector<LebDataset> datasets(const BenchOptions& o) {
-  std::vector<LebDataset> v;
-  if (o.quick) {
-    v.push_back(shared(o, "nucleon 41^3", "nucleon_41x41x41_uint8.raw.gz", {41, 41, 41}));
-    v.push_back(buckyball(48));
-    return v;
-  }
-  v.push_back(shared(o, "engine 256x256x128 (as stored)", "engine_256x256x128_uint8.raw.gz", {256, 256, 128}));
-  v.push_back(shared(o, "engine 256^3 (slices doubled, as the paper)", "engine_256x256x128_uint8.raw.gz",
-                     {256, 256, 128}, true));
-  v.back().paper[0] = "2.6";
-  v.back().paper[1] = "4.35";
-  v.back().paper[2] = "2.22";
-  v.push_back(shared(o, "hydrogen_atom 128^3", "hydrogen_atom_128x128x128_uint8.raw.gz", {128, 128, 128}));
-  v.push_back(buckyball(256));
-  v.back().paper[0] = "3.071 (1024^3)";
-  v.back().paper[1] = "5.51";
-  v.back().paper[2] = "2.6";
-  return v;
-}
-
-std::string dataBytes(const ref::Volume<std::uint16_t>& v, int bits) {
-  std::string b;
-  b.reserve(v.data().size() * static_cast<std::size_t>(bits / 8));
-  for (std::uint16_t s : v.data()) {
-    b.push_back(static_cast<char>(s & 0xff));
-    if (bits == 16) b.push_back(static_cast<char>(s >> 8));
-  }
-  return b;
-}
-
-std::string gradientBytes(const ref::Volume<std::uint16_t>& v) {
-  const std::vector<std::int8_t> g = ref::quantizedGradients(v);
-  return std::string(reinterpret_cast<const char*>(g.data()), g.size());
-}
 
 // Deltas as `bits`-bit two's complement values, little endian: what a general-purpose coder gets
 // in place of the lead-1 coder.
@@ -348,12 +267,6 @@ RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int th
   return r;
 }
 
-const LebDataset* firstAvailable(const std::vector<LebDataset>& sets) {
-  for (const LebDataset& d : sets)
-    if (d.missing.empty()) return &d;
-  return nullptr;
-}
-
 BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   BenchTable t;
   t.id = "leb.decode_speed";
@@ -514,7 +427,7 @@ BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   progress.finish();
   pages.note = "Lossless: the trade-off is size against access time, so the plot shows bytes, not error.";
   return studyTable(
-      "study.leb", "Study, LEB compression (" + d->name + ")", {pages},
+      "study.leb", "Study, LEB compression (" + d->name + ")", {pages, lebCoderStudyGroup(o, *d)},
       "Smaller pages restart the coder's context more often and add page-table entries; larger pages make a random "
       "point decode more deltas it does not need.");
 }
@@ -522,7 +435,7 @@ BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
 }  // namespace
 
 std::vector<std::string> lebBenchIds() {
-  return {"leb.table1", "leb.decode_speed", "leb.page_size", kLebScaleBenchId, "study.leb"};
+  return {"leb.table1", "leb.decode_speed", "leb.page_size", kLebCoderBenchId, kLebScaleBenchId, "study.leb"};
 }
 
 std::vector<BenchTable> lebBench(const BenchOptions& o) {
@@ -531,11 +444,12 @@ std::vector<BenchTable> lebBench(const BenchOptions& o) {
   for (const auto& id : lebBenchIds()) any |= globMatch(o.filter, id);
   if (!any) return tables;
   if (globMatch(o.filter, kLebScaleBenchId)) tables.push_back(lebScaleBench(o));
-  bool needsVolumes = false;  // leb.scale makes its own
+  if (globMatch(o.filter, kLebCoderBenchId)) tables.push_back(lebCoderBench(o));  // reads the volumes folder itself
+  bool needsVolumes = false;                                                      // leb.scale makes its own
   for (const char* id : {"leb.table1", "leb.decode_speed", "leb.page_size", "study.leb"})
     needsVolumes |= globMatch(o.filter, id);
   if (!needsVolumes) return tables;
-  const std::vector<LebDataset> sets = datasets(o);
+  const std::vector<LebDataset> sets = lebDatasets(o);
   if (globMatch(o.filter, "leb.table1")) tables.push_back(table1(o, sets));
   if (globMatch(o.filter, "leb.decode_speed")) tables.push_back(decodeSpeed(o, sets));
   if (globMatch(o.filter, "leb.page_size")) tables.push_back(pageSize(o, sets));

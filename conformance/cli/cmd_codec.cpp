@@ -52,6 +52,11 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
       ->add_option("--alpha-one", encode->alphaOne, "homogeneous colours with alpha 255: refine (lossless) or paper")
       ->default_val("refine");
   encodeCmd->add_option("--page-bits", encode->pageBits, "leb: pages of 2^N points (4..20)")->default_val(12);
+  encodeCmd
+      ->add_option("--coder", encode->lebCoder,
+                   "leb: the pages' entropy stage: lead1 (the paper's Huffman code; a version 2 stream) or adaptive "
+                   "(voxref's range coder; version 3)")
+      ->default_val("lead1");
   encodeCmd->add_flag("--no-gradients", encode->noGradients, "leb: code the data only, no gradients channel");
   encodeCmd->add_option("--bounds-out", encode->boundsOut,
                         "leb: also write the per-diamond min, max and error for isosurfaces (.vxlbb)");

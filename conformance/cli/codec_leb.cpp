@@ -63,6 +63,9 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
   if (st.gridPoints != st.volumePoints)
     out << "; padding " << (st.gridPoints - st.volumePoints) << " points beyond " << dimsText(s.dims)
         << ", not coded (they take their prediction) and excluded from the ratios";
+  out << "\ncoder           "
+      << (s.coder == ref::LebCoder::Lead1 ? "lead1 (the paper's Huffman code of lead-1 symbols; version 2)"
+                                          : "adaptive (voxref's range coder; version 3, reference/leb/FORMAT.md)");
   out << "\npages           " << st.storedPages << " stored of the grid's " << st.pages << ", each "
       << (1u << s.pageBits) << " points (pages of padding alone are not stored)\n";
   for (const ref::LebChannelStats& c : st.channels) {
@@ -92,6 +95,12 @@ int encodeLebCommand(const EncodeOptions& o) {
   ref::LebEncodeOptions options;
   options.pageBits = o.pageBits;
   options.gradients = !o.noGradients;
+  if (o.lebCoder == "lead1")
+    options.coder = ref::LebCoder::Lead1;
+  else if (o.lebCoder == "adaptive")
+    options.coder = ref::LebCoder::Adaptive;
+  else
+    throw conf::UsageError("--coder must be lead1 or adaptive, got " + o.lebCoder);
   // What the encoder will allocate is known from the extents (the samples, and the padding that
   // predictions reach: leb_padding.h). Refused before the volume is read when the process may not
   // allocate it.

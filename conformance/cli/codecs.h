@@ -27,6 +27,7 @@ struct EncodeOptions {
   std::string encoding = "normalized_rgba8";
   std::string alphaOne = "refine";
   int pageBits = 12;                // leb: 2^pageBits points per page
+  std::string lebCoder = "lead1";   // leb: the pages' entropy stage, lead1 (the paper's) or adaptive
   bool noGradients = false;         // leb: data channel only
   std::filesystem::path boundsOut;  // leb: also write the per-diamond bounds (reference/iso/BOUNDS_FORMAT.md)
   std::filesystem::path out;

@@ -4,12 +4,14 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
 
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
 #include "reference/common/parallel.h"
+#include "reference/leb/adaptive_delta_coder.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
@@ -112,18 +114,18 @@ void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& paddi
 
 // Values of one level's part of a page as the decoder's walk finds them, reconstructed in runs:
 // the walk reads only coarser levels, so the deltas of a run can be decoded in one go
-// (Lead1PageReader::read, in the order next() would give them) and the values stored after.
+// (LebPageReader::read, in the order next() would give them) and the values stored after.
 class DecodeRun {
  public:
   DecodeRun(const ChannelSpec& spec, const LebVolumeOut& out) : spec_(spec), out_(out) {}
   // The value at output position `at` (the sample index, or 3 x sample + component) is its
   // prediction plus the reader's next delta.
-  void add(std::size_t at, std::int32_t prediction, Lead1PageReader& reader) {
+  void add(std::size_t at, std::int32_t prediction, LebPageReader& reader) {
     at_[n_] = at;
     prediction_[n_] = prediction;
     if (++n_ == kValues) flush(reader);
   }
-  void flush(Lead1PageReader& reader) {
+  void flush(LebPageReader& reader) {
     const std::span<std::int32_t> delta(delta_.data(), n_);
     reader.read(delta);
     auto store = [&](auto* to) {
@@ -222,8 +224,9 @@ void inBatches(int count, int threads, const LebWindow& window, WorkSpan part, F
 // `write` at `offset` onward, run by run in order. The descriptor goes before the pages: its place
 // is kept and it is written after them. Returns the offset after the channel.
 std::uint64_t encodeChannel(const HzOrder& order, const Dims3& dims, const ChannelSpec& spec, int pageBits,
-                            const InsideValues& inside, int threads, const LebWindow& window, WorkSpan part,
-                            const LebStreamWrite& write, std::uint64_t offset) {
+                            LebCoder coder, const InsideValues& inside, int threads, const LebWindow& window,
+                            WorkSpan part, const LebStreamWrite& write, std::uint64_t offset) {
+  const bool lead1 = coder == LebCoder::Lead1;
   const ChannelPrediction prediction(order, dims, spec, pageBits, inside);
   const int runs = static_cast<int>(prediction.runs());
   std::vector<std::unique_ptr<Lead1Counter>> counters(static_cast<std::size_t>(runs));  // runs with a stored page
@@ -233,22 +236,25 @@ std::uint64_t encodeChannel(const HzOrder& order, const Dims3& dims, const Chann
       const auto r = static_cast<std::size_t>(first + i);
       const RunDeltas d = prediction.run(r);
       storedInRun[r] = d.pages.size();
-      for (const auto& page : d.pages) {
-        if (!counters[r]) counters[r] = std::make_unique<Lead1Counter>(spec.valueBits);
-        counters[r]->add(page);
-      }
+      if (lead1)  // the adaptive coder needs no counts
+        for (const auto& page : d.pages) {
+          if (!counters[r]) counters[r] = std::make_unique<Lead1Counter>(spec.valueBits);
+          counters[r]->add(page);
+        }
     });
   });
   Lead1Counter counter(spec.valueBits);
   for (const auto& c : counters)
     if (c) counter.merge(*c);
   counters.clear();
-  LebChannelTable table{spec.kind, spec.components, spec.valueBits, spec.isSigned, counter.code(), {}, {}, {}};
+  LebChannelTable table{
+      spec.kind, spec.components, spec.valueBits, spec.isSigned, lead1 ? counter.code() : Lead1Code{}, {}, {}, {},
+      coder};
   std::size_t stored = 0;
   for (const std::size_t n : storedInRun) stored += n;
   const std::uint64_t descriptorAt = offset;
-  offset += lebDescriptorSize(spec.valueBits, stored);
-  const Lead1Encoder encoder(table.code);
+  offset += lebDescriptorSize(spec.valueBits, stored, coder);
+  const std::optional<Lead1Encoder> encoder = lead1 ? std::optional<Lead1Encoder>(table.code) : std::nullopt;
   struct CodedRun {
     std::vector<std::uint32_t> storedPage, crc;
     std::vector<std::string> bytes;
@@ -260,9 +266,13 @@ std::uint64_t encodeChannel(const HzOrder& order, const Dims3& dims, const Chann
       RunDeltas d = prediction.run(static_cast<std::uint64_t>(first + i));
       CodedRun& c = coded[static_cast<std::size_t>(i)];
       for (const auto& page : d.pages) {
-        BitWriter w;
-        encoder.encodePage(page, w);
-        c.bytes.push_back(w.finish());
+        if (encoder) {
+          BitWriter w;
+          encoder->encodePage(page, w);
+          c.bytes.push_back(w.finish());
+        } else {
+          c.bytes.push_back(encodeAdaptivePage(page, spec.valueBits, spec.components));
+        }
         c.crc.push_back(crc32(c.bytes.back()));
       }
       c.storedPage = std::move(d.storedPage);
@@ -330,11 +340,11 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
   double done = 0.0;
   for (LebChannelKind kind : kinds) {
     const ChannelSpec spec = specOf(kind, v.sampleBits);
-    offset = encodeChannel(order, v.dims, spec, o.pageBits, insideOf(v, kind), o.threads, o.window,
+    offset = encodeChannel(order, v.dims, spec, o.pageBits, o.coder, insideOf(v, kind), o.threads, o.window,
                            {done / total, spec.components / total}, write, offset);
     done += spec.components;
   }
-  write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, static_cast<int>(kinds.size()), offset));
+  write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, static_cast<int>(kinds.size()), offset, o.coder));
   return offset;
 }
 
@@ -405,7 +415,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     // each stored page is reconstructed in parallel; a page's reader carries on where the previous
     // level left it, and is finished (its end checked) once the walk has left the page. Between
     // stored pages, the walk checks that no point of the volume lies in a page the stream lacks.
-    std::map<std::uint64_t, Lead1PageReader> open;
+    std::map<std::uint64_t, LebPageReader> open;
     for (int level = -1; level < s.grid.levelCount(); ++level) {
       padding.addLevel(level, inside);
       const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
@@ -413,7 +423,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
       // Segments of the level: a stored page's part of it, or a run of pages the stream lacks.
       struct Segment {
         std::uint64_t begin, end;
-        Lead1PageReader* reader;
+        LebPageReader* reader;
       };
       std::vector<Segment> segments;
       auto stored = std::lower_bound(ch.storedPage.begin(), ch.storedPage.end(), begin >> pb);

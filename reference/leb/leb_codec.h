@@ -7,7 +7,8 @@
 // and its delta is coded; points of the padding are not coded (they take their prediction, and
 // only the shell that predictions reach is computed: leb_padding.h). Deltas are cut into pages of
 // 2^pageBits indices, each coded on its own with the lead-1 code built from the counts of all
-// pages (lead1_coder.h); only pages that hold a point of the volume are stored. The gradients channel
+// pages (lead1_coder.h), or with the adaptive coder (options.coder; adaptive_delta_coder.h); only
+// pages that hold a point of the volume are stored. The gradients channel
 // (gradients.h) is predicted and coded the same way, its three components interleaved per point,
 // with a code of its own (so Table 1 can report data and gradients separately).
 //
@@ -37,6 +38,9 @@ struct LebEncodeOptions {
   bool gradients = true;  // add the gradients channel
   int threads = 0;        // 0: all cores
   LebWindow window;       // optional
+  // The pages' entropy stage: the paper's lead-1 Huffman code (a version 2 stream), or voxref's
+  // adaptive range coder (version 3; adaptive_delta_coder.h): the same deltas, the same pages.
+  LebCoder coder = LebCoder::Lead1;
 };
 
 // A volume where the codec reads it (encoding) or writes it (decoding), x fastest: the samples at 8

@@ -28,7 +28,7 @@ StreamError pageNotStored(const LebChannel& c, std::uint64_t page) {
                                              "table lacks it)");
 }
 
-Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
+LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
   const std::ptrdiff_t slot = c.slotOf(page);
   if (slot < 0) throw pageNotStored(c, page);
   const auto j = static_cast<std::size_t>(slot);
@@ -36,10 +36,12 @@ Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t 
   const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[j]);
   if (!crc32Matches(bytes, c.pageCrc[j]))
     throw StreamError(offset, pageName(c, page) + ": CRC-32 mismatch (the page is corrupt)");
-  return Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page));
+  if (s.coder == LebCoder::Adaptive)
+    return LebPageReader(AdaptivePageReader(bytes, c.valueBits, c.components, offset, pageName(c, page)));
+  return LebPageReader(Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page)));
 }
 
-void finishPage(const Lead1PageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page) {
+void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page) {
   if (points == 0)
     throw StreamError(c.descriptorOffset, pageName(c, page) +
                                               " is stored, but it holds no point of the volume (a stream stores "
@@ -49,7 +51,7 @@ void finishPage(const Lead1PageReader& reader, std::uint64_t points, const LebCh
 
 std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
                                               std::uint64_t page) {
-  Lead1PageReader reader = openPage(s, c, page);
+  LebPageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
   std::vector<std::int16_t> out((std::size_t{1} << s.pageBits) * comps, 0);
   const std::uint64_t begin = page << s.pageBits;

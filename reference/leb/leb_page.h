@@ -5,9 +5,12 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
+#include <variant>
 #include <vector>
 
 #include "reference/common/byte_stream.h"
+#include "reference/leb/adaptive_delta_coder.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_stream.h"
@@ -20,13 +23,38 @@ std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pa
 // The error of a page that holds points of the volume but is not in the stream's page table.
 StreamError pageNotStored(const LebChannel& c, std::uint64_t page);
 
+// The deltas of one page, by the stream's coder (LebStream::coder): the same values and errors
+// whichever coder made the page.
+class LebPageReader {
+ public:
+  explicit LebPageReader(Lead1PageReader r) : r_(std::move(r)) {}
+  explicit LebPageReader(AdaptivePageReader r) : r_(std::move(r)) {}
+  std::int32_t next() {
+    return std::visit([](auto& r) { return r.next(); }, r_);
+  }
+  void read(std::span<std::int32_t> out) {
+    std::visit([&](auto& r) { r.read(out); }, r_);
+  }
+  void finish() const {
+    std::visit([](const auto& r) { r.finish(); }, r_);
+  }
+  std::size_t valuesRead() const {
+    return std::visit([](const auto& r) { return r.valuesRead(); }, r_);
+  }
+
+ private:
+  std::variant<Lead1PageReader, AdaptivePageReader> r_;
+};
+
 // Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
 // a reader of its deltas; the page holds one delta per component of each point inside the volume.
-Lead1PageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
+// The page's bytes are the stream's: the stream must outlive the reader.
+LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
 
 // The end of a page read whole: StreamError unless the page held `points` > 0 points of the
-// volume (a stream stores no page without one) and nothing but the last byte's zero bits is left.
-void finishPage(const Lead1PageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page);
+// volume (a stream stores no page without one) and nothing is left after its last value (for
+// lead-1, nothing but the last byte's zero bits).
+void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page);
 
 // The page's deltas (each fits an int16) placed at their positions: 2^pageBits x components entries, 0 for the padding
 // and for indices past the grid's last point. Throws StreamError for a corrupt page.

@@ -5,9 +5,11 @@
 
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
+#include "reference/leb/adaptive_delta_coder.h"
 
 namespace voxref::ref {
-namespace {}  // namespace
+
+std::string_view lebCoderName(LebCoder coder) { return coder == LebCoder::Lead1 ? "lead1" : "adaptive"; }
 
 std::uint64_t LebStream::pageCount() const { return lebPageCount(grid, pageBits); }
 
@@ -34,17 +36,18 @@ std::uint64_t LebChannelTable::payloadBytes() const {
 }
 
 std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
-                           std::uint64_t totalBytes) {
+                           std::uint64_t totalBytes, LebCoder coder) {
   // FORMAT.md section 1.
   ByteWriter w;
   w.bytes("VXLB", 4);
-  w.le<std::uint16_t>(kLebVersion);
+  w.le<std::uint16_t>(static_cast<std::uint16_t>(lebVersionOf(coder)));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(sampleBits));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(grid.k));
   for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(dims[a]));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(pageBits));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(channelCount));
-  w.le<std::uint16_t>(0);
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(coder));
+  w.le<std::uint8_t>(0);
   w.le<std::uint64_t>(totalBytes);
   w.le<std::uint32_t>(crc32(w.str()));
   return std::move(w.str());
@@ -65,7 +68,11 @@ std::string lebDescriptorBytes(std::uint64_t pages, const LebChannelTable& c) {
   w.le<std::uint32_t>(static_cast<std::uint32_t>(pages));
   w.le<std::uint32_t>(static_cast<std::uint32_t>(n));
   w.le<std::uint64_t>(c.payloadBytes());
-  w.bytes(c.code.lengths.data(), c.code.lengths.size());
+  if (c.coder == LebCoder::Lead1) {
+    if (c.code.lengths.size() != lebCodeTableSize(c.valueBits, c.coder))
+      throw std::invalid_argument("a lead-1 channel needs its code lengths");
+    w.bytes(c.code.lengths.data(), c.code.lengths.size());
+  }
   for (const std::uint32_t p : c.storedPage) w.le<std::uint32_t>(p);
   for (const std::uint32_t len : c.pageLength) w.le<std::uint32_t>(len);
   for (const std::uint32_t crc : c.pageCrc) w.le<std::uint32_t>(crc);
@@ -90,11 +97,14 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
   r.need(kLebHeaderBytes - 4, "header");
   if (!crc32Matches(b.substr(0, 32), static_cast<std::uint32_t>(loadLe(b.data() + 32, 4))))
     r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
-  if (const std::size_t at = r.offset(); r.le<std::uint16_t>("version") != kLebVersion)
-    r.fail(at, "version: expected " + std::to_string(kLebVersion) + ", got " +
-                   std::to_string(loadLe(b.data() + at, 2)) +
-                   " (version 1 streams, with a page table entry for every page of the padding, are no longer "
-                   "read: encode the volume again)");
+  const std::size_t versionAt = r.offset();
+  const int version = r.le<std::uint16_t>("version");
+  if (version != kLebVersion && version != kLebAdaptiveVersion)
+    r.fail(versionAt, "version: expected " + std::to_string(kLebVersion) + " (lead-1) or " +
+                          std::to_string(kLebAdaptiveVersion) + " (adaptive), got " + std::to_string(version) +
+                          (version == 1 ? " (version 1 streams, with a page table entry for every page of the padding, "
+                                          "are no longer read: encode the volume again)"
+                                        : ""));
   const std::size_t bitsAt = r.offset();
   s.sampleBits = r.le<std::uint8_t>("sample_bits");
   if (s.sampleBits != 8 && s.sampleBits != 16)
@@ -107,7 +117,14 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
                   " (expected " + std::to_string(lebGridCovering(s.dims).k) + ")");
   s.pageBits = r.le<std::uint8_t>("page_bits", kMinLebPageBits, kMaxLebPageBits);
   const int channelCount = r.le<std::uint8_t>("channel_count", 1, 2);
-  r.le<std::uint16_t>("reserved", 0, 0);
+  // Byte 22, the coder: the version's (2: lead-1, 3: adaptive).
+  const std::size_t coderAt = r.offset();
+  const int coder = r.le<std::uint8_t>("coder");
+  if (coder != (version == kLebVersion ? 0 : 1))
+    r.fail(coderAt, "coder: a version " + std::to_string(version) + " stream has coder " +
+                        (version == kLebVersion ? "0 (lead-1)" : "1 (adaptive)") + ", got " + std::to_string(coder));
+  s.coder = static_cast<LebCoder>(coder);
+  r.le<std::uint8_t>("reserved", 0, 0);
   const std::size_t totalAt = r.offset();
   const std::uint64_t total = r.le<std::uint64_t>("total_bytes");
   r.le<std::uint32_t>("header_crc");  // checked above
@@ -133,13 +150,14 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
     const std::uint64_t stored = r.le<std::uint32_t>("stored_pages", 1, pages);
     const std::size_t payloadAt = r.offset();
     const std::uint64_t payload = r.le<std::uint64_t>("payload_bytes");
-    const std::size_t tableAt = r.offset();
-    const std::size_t symbols = static_cast<std::size_t>(c.valueBits + 1);
-    const std::string_view table = r.take(symbols * symbols, "code lengths");
-    c.code.valueBits = c.valueBits;
-    c.code.lengths.assign(table.begin(), table.end());
-    if (const std::string p = lead1CodeProblem(c.code); !p.empty()) r.fail(tableAt, "code lengths: " + p);
-    c.decoder = std::make_shared<const Lead1Decoder>(c.code);
+    if (s.coder == LebCoder::Lead1) {
+      const std::size_t tableAt = r.offset();
+      const std::string_view table = r.take(lebCodeTableSize(c.valueBits, s.coder), "code lengths");
+      c.code.valueBits = c.valueBits;
+      c.code.lengths.assign(table.begin(), table.end());
+      if (const std::string p = lead1CodeProblem(c.code); !p.empty()) r.fail(tableAt, "code lengths: " + p);
+      c.decoder = std::make_shared<const Lead1Decoder>(c.code);
+    }
     // The page table: its size is checked against the stream before it is read.
     r.need(static_cast<std::size_t>(stored) * 12 + 4, "page table");
     const std::size_t indicesAt = r.offset();
@@ -165,14 +183,16 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
     if (c.pageOffset.back() != payload)
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " +
                             std::to_string(c.pageOffset.back()));
-    // Every delta costs at least one bit (no code is shorter), so a stream too short for its
-    // volume is refused here, before a decoder allocates anything for that volume.
+    // Every delta costs at least one bit with lead-1 (no code is shorter) and 2^-14 bytes with the
+    // adaptive coder (FORMAT.md, "Adaptive pages"), so a stream too short for its volume is
+    // refused here, before a decoder allocates anything for that volume.
     const std::uint64_t deltas =
         static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
-    if (payload < (deltas + 7) / 8)
+    const std::uint64_t perByte = s.coder == LebCoder::Lead1 ? 8 : kAdaptiveDeltasPerByteBound;
+    if (payload < (deltas + perByte - 1) / perByte)
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " +
-                            std::to_string(deltas) + " deltas of a " + dimsText(s.dims) +
-                            " volume (at least one bit each)");
+                            std::to_string(deltas) + " deltas of a " + dimsText(s.dims) + " volume (at least " +
+                            (s.coder == LebCoder::Lead1 ? "one bit each" : "2^-14 bytes each") + ")");
     c.pageCrc.resize(static_cast<std::size_t>(stored));
     for (std::uint64_t i = 0; i < stored; ++i) c.pageCrc[i] = r.le<std::uint32_t>("page crc");
     const std::size_t crcAt = r.offset();

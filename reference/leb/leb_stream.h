@@ -2,15 +2,14 @@
 // parseLebStream follows it section by section.
 //
 // parseLebStream is safe on untrusted bytes: it checks every field, the header and descriptor
-// CRC-32s, the code tables (prefix-free, lengths within the limit) and that the page table fits
-// the stream, before it keeps anything; the page payloads are checked (CRC-32, then the lead-1
-// decoder) when a page is decoded. Errors are StreamError (byte_stream.h) naming the offset and
-// the field. Memory: the parsed stream keeps the bytes, plus 16 bytes per stored page and channel
-// (the page table, whose 12 bytes per stored page are checked to lie in the stream before it is
-// allocated: at most 1.4 times the stream's size) and the code's decoding tables (a few KiB). Claimed sizes
-// (total_bytes, payload_bytes, a page table of 2^40 bytes) are checked against the stream's length
-// before anything is allocated for them; what decoding the volume costs is lebDecodeMemoryBytes
-// (leb_codec.h).
+// CRC-32s, the code tables of a lead-1 stream (prefix-free, lengths within the limit) and that the
+// page table fits the stream, before it keeps anything; the page payloads are checked (CRC-32,
+// then the lead-1 or the adaptive page decoder) when a page is decoded. Errors are StreamError (byte_stream.h) naming
+// the offset and the field. Memory: the parsed stream keeps the bytes, plus 16 bytes per stored page and channel (the
+// page table, whose 12 bytes per stored page are checked to lie in the stream before it is allocated: at most 1.4 times
+// the stream's size) and the code's decoding tables (a few KiB). Claimed sizes (total_bytes, payload_bytes, a page
+// table of 2^40 bytes) are checked against the stream's length before anything is allocated for them; what decoding the
+// volume costs is lebDecodeMemoryBytes (leb_codec.h).
 #pragma once
 
 #include <cstdint>
@@ -27,13 +26,19 @@ namespace voxref::ref {
 
 enum class LebChannelKind : std::uint8_t { Data = 0, Gradients = 1 };
 
+// The entropy stage of a stream's pages (FORMAT.md, header byte 22): the paper's lead-1 Huffman
+// code (lead1_coder.h; version 2 streams) or voxref's adaptive range coder
+// (adaptive_delta_coder.h; version 3). The deltas coded are the same.
+enum class LebCoder : std::uint8_t { Lead1 = 0, Adaptive = 1 };
+std::string_view lebCoderName(LebCoder coder);  // "lead1", "adaptive"
+
 struct LebChannel {
   LebChannelKind kind = LebChannelKind::Data;
   int components = 1;  // 1 for data, 3 for gradients (gx, gy, gz interleaved per point)
   int valueBits = 8;   // data: the sample bits; gradients: 8
   bool isSigned = false;
-  Lead1Code code;
-  std::shared_ptr<const Lead1Decoder> decoder;  // built from `code` by parseLebStream
+  Lead1Code code;                               // lead-1 streams only
+  std::shared_ptr<const Lead1Decoder> decoder;  // built from `code` by parseLebStream; null for adaptive
   std::size_t descriptorOffset = 0, descriptorBytes = 0;
   std::size_t payloadOffset = 0;  // of the first page, in the stream
   // The stored pages (those holding a point of the volume; FORMAT.md, version 2), ascending: the
@@ -56,6 +61,7 @@ struct LebStream {
   int sampleBits = 8;
   LebGrid grid;
   int pageBits = 12;  // a page holds 2^pageBits consecutive hierarchical indices
+  LebCoder coder = LebCoder::Lead1;
   std::vector<LebChannel> channels;
 
   std::uint64_t pageCount() const;  // all pages of the grid, stored or not
@@ -65,7 +71,9 @@ struct LebStream {
 };
 
 inline constexpr std::size_t kLebHeaderBytes = 36;
-inline constexpr int kLebVersion = 2;
+inline constexpr int kLebVersion = 2;          // lead-1 streams
+inline constexpr int kLebAdaptiveVersion = 3;  // streams of the adaptive coder
+inline int lebVersionOf(LebCoder coder) { return coder == LebCoder::Lead1 ? kLebVersion : kLebAdaptiveVersion; }
 inline constexpr int kMinLebPageBits = 4, kMaxLebPageBits = 20;
 // The pages of a grid in pages of 2^pageBits indices, stored or not: ceil((2^k + 1)^3 / 2^pageBits).
 inline std::uint64_t lebPageCount(const LebGrid& grid, int pageBits) {
@@ -78,20 +86,26 @@ struct LebChannelTable {
   LebChannelKind kind = LebChannelKind::Data;
   int components = 1, valueBits = 8;
   bool isSigned = false;
-  Lead1Code code;
+  Lead1Code code;  // written for lead-1 only
   std::vector<std::uint32_t> storedPage, pageLength, pageCrc;
+  LebCoder coder = LebCoder::Lead1;
   std::uint64_t payloadBytes() const;
 };
-// The header (section 1) of a stream of `totalBytes` bytes with `channelCount` channels.
+// The header (section 1) of a stream of `totalBytes` bytes with `channelCount` channels, its
+// version the coder's (lebVersionOf).
 std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
-                           std::uint64_t totalBytes);
+                           std::uint64_t totalBytes, LebCoder coder = LebCoder::Lead1);
 // The descriptor of a channel (section 2) among `pageCount` pages, with its CRC-32; exactly
-// lebDescriptorSize(valueBits, storedPage.size()) bytes. Throws std::invalid_argument for a table
-// whose stored pages are not ascending below pageCount, or whose columns differ in length.
+// lebDescriptorSize(valueBits, storedPage.size(), coder) bytes (the code lengths only for lead-1).
+// Throws std::invalid_argument for a table whose stored pages are not ascending below pageCount,
+// or whose columns differ in length.
 std::string lebDescriptorBytes(std::uint64_t pageCount, const LebChannelTable& table);
-inline std::size_t lebDescriptorSize(int valueBits, std::size_t storedPages) {
+inline std::size_t lebCodeTableSize(int valueBits, LebCoder coder) {
   const auto symbols = static_cast<std::size_t>(valueBits + 1);
-  return 20 + symbols * symbols + 12 * storedPages + 4;
+  return coder == LebCoder::Lead1 ? symbols * symbols : 0;
+}
+inline std::size_t lebDescriptorSize(int valueBits, std::size_t storedPages, LebCoder coder = LebCoder::Lead1) {
+  return 20 + lebCodeTableSize(valueBits, coder) + 12 * storedPages + 4;
 }
 
 // Throws StreamError. Takes the bytes by value: the stream keeps them.

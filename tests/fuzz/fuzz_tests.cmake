@@ -20,7 +20,7 @@ voxref_expect(cli.render.system_not_a_string COMMAND "${voxref_bin}|render|--sce
               EXIT 2 OUTPUT "system: expected a string, got 5")
 
 option(VOXREF_FUZZ "build the libFuzzer targets and run them for a bounded time (clang, libclang-rt-14-dev)" ON)
-# CI budget: 7 targets x 15 s with ctest -j2 is about a minute. An existing build tree keeps the
+# CI budget: 9 targets x 15 s with ctest -j2 is about a minute. An existing build tree keeps the
 # value it was configured with (a cache variable): -DVOXREF_FUZZ_SECONDS=15 resets it.
 set(VOXREF_FUZZ_SECONDS 15 CACHE STRING "seconds each fuzz target runs under ctest")
 if(VOXREF_FUZZ)
@@ -77,6 +77,7 @@ if(VOXREF_FUZZ)
   set(json_dict "-dict=${CMAKE_CURRENT_LIST_DIR}/dicts/json.dict")
   voxref_fuzz_test(leb_stream SEEDS $<TARGET_FILE:make_leb_seeds>)
   voxref_fuzz_test(huffman SEEDS $<TARGET_FILE:make_fuzz_seeds> huffman)
+  voxref_fuzz_test(adaptive_page SEEDS $<TARGET_FILE:make_fuzz_seeds> adaptive_page)
   voxref_fuzz_test(timevarying_container SEEDS $<TARGET_FILE:make_fuzz_seeds> timevarying)
   voxref_fuzz_test(scene_json SEEDS $<TARGET_FILE:make_fuzz_seeds> scene OPTIONS ${json_dict})
   voxref_fuzz_test(raw_volume SEEDS $<TARGET_FILE:make_fuzz_seeds> raw_volume OPTIONS -malloc_limit_mb=16)

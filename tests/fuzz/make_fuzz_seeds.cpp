@@ -4,6 +4,7 @@
 //
 //   make_fuzz_seeds timevarying DIR   .vxtv containers (serializeTimeVarying of encoded series)
 //   make_fuzz_seeds huffman DIR       lead-1 code tables with a page each, and symbol counts
+//   make_fuzz_seeds adaptive_page DIR pages of the adaptive delta coder, every shape
 //   make_fuzz_seeds scene DIR         scene JSON: the built-in cases' scenes and the iso scenes
 //   make_fuzz_seeds raw_volume DIR    raw volumes, plain and gzip (the target's input layout)
 //   make_fuzz_seeds manifest DIR      fixture manifests (the layout generateIsoFixtures writes)
@@ -39,6 +40,7 @@
 #include "conformance/modules/sparsegrid/sparsegrid_scene.h"
 #include "conformance/modules/timevarying/timevarying_scene.h"
 #include "reference/common/byte_stream.h"
+#include "reference/leb/adaptive_delta_coder.h"
 #include "reference/leb/lead1_coder.h"
 #include "reference/timevarying/container.h"
 #include "reference/timevarying/plume.h"
@@ -343,15 +345,45 @@ void expectations() {
   }
 }
 
+// --- adaptive delta coder pages ----------------------------------------------------------------
+void adaptivePage() {
+  auto seed = [](const std::string& name, int bits, int components, const std::vector<std::int32_t>& deltas) {
+    const std::string page = ref::encodeAdaptivePage(deltas, bits, components);
+    ref::AdaptivePageReader reader(page, bits, components, 0, name);
+    std::vector<std::int32_t> back(deltas.size());
+    reader.read(back);
+    reader.finish();
+    if (back != deltas) throw std::runtime_error(name + " does not read back");
+    const std::size_t n = deltas.size();
+    std::string bytes{static_cast<char>((bits == 16 ? 1 : 0) | (components == 3 ? 2 : 0)), static_cast<char>(n & 0xff),
+                      static_cast<char>(n >> 8)};
+    write(name, bytes + page);
+  };
+  std::vector<std::int32_t> smooth, noisy, wide;
+  std::uint32_t x = 54321;
+  for (int i = 0; i < 300; ++i) {
+    smooth.push_back(static_cast<std::int32_t>(std::lround(6 * std::sin(0.3 * i))));
+    x = x * 1103515245u + 12345u;
+    noisy.push_back(static_cast<std::int32_t>((x >> 16) % 256) - 128);
+    wide.push_back(static_cast<std::int32_t>((x >> 8) % 65536) - 32768);
+  }
+  seed("smooth8.adaptive", 8, 1, smooth);
+  seed("noisy8x3.adaptive", 8, 3, noisy);
+  seed("wide16.adaptive", 16, 1, wide);
+  seed("extremes8x3.adaptive", 8, 3, {0, -128, 127, 1, -1, 0, 0, -128, 64});
+  seed("zeros8.adaptive", 8, 1, std::vector<std::int32_t>(4096, 0));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   const std::map<std::string, std::function<void()>> kinds{
-      {"timevarying", timevarying},  {"huffman", huffman},   {"scene", scene},
-      {"raw_volume", rawVolume},     {"manifest", manifest}, {"results", results},
-      {"expectations", expectations}};
+      {"timevarying", timevarying},   {"huffman", huffman},           {"scene", scene},
+      {"raw_volume", rawVolume},      {"manifest", manifest},         {"results", results},
+      {"expectations", expectations}, {"adaptive_page", adaptivePage}};
   if (argc != 3 || !kinds.count(argv[1])) {
-    std::cerr << "usage: make_fuzz_seeds timevarying|huffman|scene|raw_volume|manifest|results|expectations DIR\n";
+    std::cerr << "usage: make_fuzz_seeds "
+                 "timevarying|huffman|adaptive_page|scene|raw_volume|manifest|results|expectations DIR\n";
     return 2;
   }
   outDir = argv[2];

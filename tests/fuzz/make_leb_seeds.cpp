@@ -1,5 +1,6 @@
 // Writes a seed corpus of valid LEB streams for the fuzz target: small volumes of each kind the
-// decoder handles (8 and 16 bits, with and without gradients, padded and not, tiny pages).
+// decoder handles (8 and 16 bits, with and without gradients, padded and not, tiny pages), with
+// each coder (lead-1: version 2; adaptive: version 3).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -16,10 +17,12 @@ int main(int argc, char** argv) {
   }
   const std::filesystem::path dir = argv[1];
   std::filesystem::create_directories(dir);
-  auto write = [&](const std::string& name, const Volume<std::uint16_t>& v, int bits, int pageBits, bool gradients) {
+  auto write = [&](const std::string& name, const Volume<std::uint16_t>& v, int bits, int pageBits, bool gradients,
+                   LebCoder coder = LebCoder::Lead1) {
     LebEncodeOptions o;
     o.pageBits = pageBits;
     o.gradients = gradients;
+    o.coder = coder;
     std::ofstream(dir / name, std::ios::binary) << encodeLeb(v, bits, o);
   };
   std::mt19937 rng(1);
@@ -36,5 +39,8 @@ int main(int argc, char** argv) {
   write("wide16.vxleb", wide, 16, 4, true);
   write("constant.vxleb", Volume<std::uint16_t>({3, 3, 3}, 7), 8, 4, false);
   write("single.vxleb", Volume<std::uint16_t>({1, 1, 1}, 200), 8, 4, true);
+  write("adaptive_smooth_gradients.vxleb", smooth, 8, 4, true, LebCoder::Adaptive);
+  write("adaptive_noise.vxleb", noise, 8, 6, true, LebCoder::Adaptive);
+  write("adaptive_wide16.vxleb", wide, 16, 4, false, LebCoder::Adaptive);
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "reference/leb/leb_codec.h"
 
 #include <algorithm>
+#include <functional>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -35,11 +36,15 @@ Volume<std::uint16_t> smooth(const Dims3& d, int bits) {
   return v;
 }
 
-void expectRoundTrip(const Volume<std::uint16_t>& v, int bits, int pageBits, const std::string& what) {
-  SCOPED_TRACE(what + ", page bits " + std::to_string(pageBits));
+constexpr LebCoder kCoders[] = {LebCoder::Lead1, LebCoder::Adaptive};
+
+void expectRoundTrip(const Volume<std::uint16_t>& v, int bits, int pageBits, const std::string& what, LebCoder coder) {
+  SCOPED_TRACE(what + ", page bits " + std::to_string(pageBits) + ", coder " + std::string(lebCoderName(coder)));
   LebEncodeOptions o;
   o.pageBits = pageBits;
+  o.coder = coder;
   const LebStream s = parseLebStream(encodeLeb(v, bits, o));
+  EXPECT_EQ(s.coder, coder);
   const LebDecoded d = decodeLeb(s);
   ASSERT_EQ(d.data.dims(), v.dims());
   EXPECT_EQ(d.data.data(), v.data());
@@ -94,34 +99,75 @@ TEST(LebCodec, TheStreamingEncoderWritesEachByteOnceInTheDocumentedOrder) {
 }
 
 TEST(LebCodec, RoundTripOfTheEdgeCases) {
-  for (int pageBits : {4, 12}) {
-    expectRoundTrip(Volume<std::uint16_t>({17, 17, 17}, 77), 8, pageBits, "constant");
-    Volume<std::uint16_t> spike({33, 33, 33}, 0);
-    spike.at(16, 9, 30) = 255;
-    expectRoundTrip(spike, 8, pageBits, "one spike");
-    expectRoundTrip(noise({20, 31, 9}, 8, 3), 8, pageBits, "full-range noise");
-    expectRoundTrip(noise({2, 2, 2}, 8, 4), 8, pageBits, "2x2x2");
-    expectRoundTrip(noise({1, 1, 1}, 8, 5), 8, pageBits, "1x1x1");
-    expectRoundTrip(smooth({37, 5, 101}, 8), 8, pageBits, "37x5x101");
-    Volume<std::uint16_t> wide = noise({19, 23, 17}, 16, 6);
-    wide.at(0, 0, 0) = 0;
-    wide.at(1, 0, 0) = 65535;
-    wide.at(2, 0, 0) = 0;
-    expectRoundTrip(wide, 16, pageBits, "uint16 using all 16 bits");
-    expectRoundTrip(smooth({65, 65, 65}, 16), 16, pageBits, "uint16 smooth, unpadded grid");
-    expectRoundTrip(Volume<std::uint16_t>({9, 9, 9}, 65535), 16, pageBits, "uint16 constant at the top");
-  }
+  for (const LebCoder coder : kCoders)
+    for (int pageBits : {4, 12}) {
+      auto expectRoundTrip = [&](const Volume<std::uint16_t>& v, int bits, int pb, const std::string& what) {
+        voxref::ref::expectRoundTrip(v, bits, pb, what, coder);
+      };
+      expectRoundTrip(Volume<std::uint16_t>({17, 17, 17}, 77), 8, pageBits, "constant");
+      Volume<std::uint16_t> spike({33, 33, 33}, 0);
+      spike.at(16, 9, 30) = 255;
+      expectRoundTrip(spike, 8, pageBits, "one spike");
+      expectRoundTrip(noise({20, 31, 9}, 8, 3), 8, pageBits, "full-range noise");
+      expectRoundTrip(noise({2, 2, 2}, 8, 4), 8, pageBits, "2x2x2");
+      expectRoundTrip(noise({1, 1, 1}, 8, 5), 8, pageBits, "1x1x1");
+      expectRoundTrip(smooth({37, 5, 101}, 8), 8, pageBits, "37x5x101");
+      Volume<std::uint16_t> wide = noise({19, 23, 17}, 16, 6);
+      wide.at(0, 0, 0) = 0;
+      wide.at(1, 0, 0) = 65535;
+      wide.at(2, 0, 0) = 0;
+      expectRoundTrip(wide, 16, pageBits, "uint16 using all 16 bits");
+      expectRoundTrip(smooth({65, 65, 65}, 16), 16, pageBits, "uint16 smooth, unpadded grid");
+      expectRoundTrip(Volume<std::uint16_t>({9, 9, 9}, 65535), 16, pageBits, "uint16 constant at the top");
+    }
 }
 
 TEST(LebCodec, SameBytesForEveryThreadCount) {
   const Volume<std::uint16_t> v = smooth({40, 30, 20}, 8);
-  LebEncodeOptions one, two;
-  one.threads = 1;
-  two.threads = 2;
-  const std::string a = encodeLeb(v, 8, one), b = encodeLeb(v, 8, two);
-  EXPECT_EQ(a, b);
-  const LebStream s = parseLebStream(a);
-  EXPECT_EQ(decodeLeb(s, 1).data.data(), decodeLeb(s, 2).data.data());
+  for (const LebCoder coder : kCoders) {
+    LebEncodeOptions one, two;
+    one.threads = 1;
+    two.threads = 2;
+    one.coder = two.coder = coder;
+    const std::string a = encodeLeb(v, 8, one), b = encodeLeb(v, 8, two);
+    EXPECT_EQ(a, b);
+    const LebStream s = parseLebStream(a);
+    EXPECT_EQ(decodeLeb(s, 1).data.data(), decodeLeb(s, 2).data.data());
+  }
+}
+
+// The adaptive coder's stream (reference/leb/FORMAT.md, header byte 22 and "Adaptive pages"): version 3, coder
+// 1, the same stored pages as the lead-1 stream of the volume, no code table in the descriptors,
+// and every page exactly the bytes encodeAdaptivePage makes of that page's lead-1 deltas.
+TEST(LebCodec, AnAdaptiveStreamCodesTheSameDeltasInItsOwnPages) {
+  const Volume<std::uint16_t> v = smooth({37, 21, 13}, 8);
+  LebEncodeOptions o;
+  o.pageBits = 7;
+  const LebStream lead1 = parseLebStream(encodeLeb(v, 8, o));
+  o.coder = LebCoder::Adaptive;
+  const LebStream adaptive = parseLebStream(encodeLeb(v, 8, o));
+  EXPECT_EQ(lead1.bytes[4], 2);
+  EXPECT_EQ(adaptive.bytes[4], 3);
+  EXPECT_EQ(adaptive.bytes[22], 1);
+  ASSERT_EQ(adaptive.channels.size(), 2u);
+  for (std::size_t ci = 0; ci < 2; ++ci) {
+    const LebChannel &a = adaptive.channels[ci], &l = lead1.channels[ci];
+    EXPECT_EQ(a.storedPage, l.storedPage);
+    EXPECT_EQ(a.decoder, nullptr);
+    EXPECT_EQ(a.descriptorBytes, lebDescriptorSize(a.valueBits, a.storedPage.size(), LebCoder::Adaptive));
+    for (std::size_t j = 0; j < a.storedPage.size(); ++j) {
+      const std::uint64_t points = insidePointsOfPage(HzOrder(lead1.grid), v.dims(), o.pageBits, l.storedPage[j]);
+      std::vector<std::int32_t> deltas(static_cast<std::size_t>(points) * static_cast<std::size_t>(l.components));
+      LebPageReader r = openPage(lead1, l, l.storedPage[j]);
+      r.read(deltas);
+      r.finish();
+      EXPECT_EQ(adaptive.page(a, j), encodeAdaptivePage(deltas, a.valueBits, a.components))
+          << "channel " << ci << ", page " << j;
+    }
+  }
+  const LebDecoded d = decodeLeb(adaptive);
+  EXPECT_EQ(d.data.data(), v.data());
+  EXPECT_EQ(d.gradients, quantizedGradients(v));
 }
 
 // The deltas of equation 2 from the closed form, point by point in H order (HzOrder::point,
@@ -178,66 +224,69 @@ TEST(LebCodec, RejectsBadInput) {
 }
 
 TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
-  for (const Dims3 dims : {Dims3{37, 5, 101}, Dims3{33, 33, 33}}) {
-    const Volume<std::uint16_t> v = smooth(dims, 8);
-    LebEncodeOptions o;
-    o.pageBits = 8;
-    auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, 8, o)));
-    const std::vector<std::int8_t> g = quantizedGradients(v);
-    LebReader reader(s, 1 << 16);
-    std::mt19937 rng(9);
-    for (int i = 0; i < 3000; ++i) {
-      const int x = static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
-                y = static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
-                z = static_cast<int>(rng() % static_cast<unsigned>(dims[2]));
-      ASSERT_EQ(reader.sample({x, y, z}), v.at(x, y, z));
-      const auto gr = reader.gradient({x, y, z});
-      const std::size_t at = 3 * v.index(x, y, z);
-      ASSERT_EQ(gr[0], g[at]);
-      ASSERT_EQ(gr[1], g[at + 1]);
-      ASSERT_EQ(gr[2], g[at + 2]);
-    }
-    EXPECT_GT(reader.cacheStats().hits, 0u);
-    EXPECT_LE(reader.cacheStats().peakBytes, std::size_t{1} << 16);
-    // Both channels in one query, and the channels asked for in turn in every order (a memo entry
-    // that knows one channel gains the other), on a small memo that is emptied often.
-    LebReader both(s, 1 << 12);
-    for (int i = 0; i < 3000; ++i) {
-      const GridPoint p{static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
-                        static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
-                        static_cast<int>(rng() % static_cast<unsigned>(dims[2]))};
-      const std::size_t at = 3 * v.index(p[0], p[1], p[2]);
-      const std::array<std::int8_t, 3> want{g[at], g[at + 1], g[at + 2]};
-      switch (i % 3) {
-        case 0: {
-          const LebReader::SampleAndGradient sg = both.sampleAndGradient(p);
-          ASSERT_EQ(sg.sample, v.at(p[0], p[1], p[2]));
-          ASSERT_EQ(sg.gradient, want);
-          break;
-        }
-        case 1:
-          ASSERT_EQ(both.gradient(p), want);
-          ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
-          break;
-        default:
-          ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
-          ASSERT_EQ(both.gradient(p), want);
-          ASSERT_EQ(both.sampleAndGradient(p).gradient, want);
+  for (const LebCoder coder : kCoders)
+    for (const Dims3 dims : {Dims3{37, 5, 101}, Dims3{33, 33, 33}}) {
+      SCOPED_TRACE(std::string(lebCoderName(coder)));
+      const Volume<std::uint16_t> v = smooth(dims, 8);
+      LebEncodeOptions o;
+      o.pageBits = 8;
+      o.coder = coder;
+      auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, 8, o)));
+      const std::vector<std::int8_t> g = quantizedGradients(v);
+      LebReader reader(s, 1 << 16);
+      std::mt19937 rng(9);
+      for (int i = 0; i < 3000; ++i) {
+        const int x = static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
+                  y = static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
+                  z = static_cast<int>(rng() % static_cast<unsigned>(dims[2]));
+        ASSERT_EQ(reader.sample({x, y, z}), v.at(x, y, z));
+        const auto gr = reader.gradient({x, y, z});
+        const std::size_t at = 3 * v.index(x, y, z);
+        ASSERT_EQ(gr[0], g[at]);
+        ASSERT_EQ(gr[1], g[at + 1]);
+        ASSERT_EQ(gr[2], g[at + 2]);
       }
-    }
-    // Whole pages: the points inside the volume equal the volume.
-    const HzOrder order(s->grid);
-    for (std::uint64_t page = 0; page < s->pageCount(); page += 7) {
-      const auto values = reader.reconstructPage(LebChannelKind::Data, page);
-      for (std::uint64_t i = 0; i < (std::uint64_t{1} << s->pageBits) && (page << s->pageBits) + i < order.size();
-           ++i) {
-        const GridPoint p = order.point((page << s->pageBits) + i);
-        if (p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2]) {
-          ASSERT_EQ(values[static_cast<std::size_t>(i)], v.at(p[0], p[1], p[2]));
+      EXPECT_GT(reader.cacheStats().hits, 0u);
+      EXPECT_LE(reader.cacheStats().peakBytes, std::size_t{1} << 16);
+      // Both channels in one query, and the channels asked for in turn in every order (a memo entry
+      // that knows one channel gains the other), on a small memo that is emptied often.
+      LebReader both(s, 1 << 12);
+      for (int i = 0; i < 3000; ++i) {
+        const GridPoint p{static_cast<int>(rng() % static_cast<unsigned>(dims[0])),
+                          static_cast<int>(rng() % static_cast<unsigned>(dims[1])),
+                          static_cast<int>(rng() % static_cast<unsigned>(dims[2]))};
+        const std::size_t at = 3 * v.index(p[0], p[1], p[2]);
+        const std::array<std::int8_t, 3> want{g[at], g[at + 1], g[at + 2]};
+        switch (i % 3) {
+          case 0: {
+            const LebReader::SampleAndGradient sg = both.sampleAndGradient(p);
+            ASSERT_EQ(sg.sample, v.at(p[0], p[1], p[2]));
+            ASSERT_EQ(sg.gradient, want);
+            break;
+          }
+          case 1:
+            ASSERT_EQ(both.gradient(p), want);
+            ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
+            break;
+          default:
+            ASSERT_EQ(both.sample(p), v.at(p[0], p[1], p[2]));
+            ASSERT_EQ(both.gradient(p), want);
+            ASSERT_EQ(both.sampleAndGradient(p).gradient, want);
         }
       }
+      // Whole pages: the points inside the volume equal the volume.
+      const HzOrder order(s->grid);
+      for (std::uint64_t page = 0; page < s->pageCount(); page += 7) {
+        const auto values = reader.reconstructPage(LebChannelKind::Data, page);
+        for (std::uint64_t i = 0; i < (std::uint64_t{1} << s->pageBits) && (page << s->pageBits) + i < order.size();
+             ++i) {
+          const GridPoint p = order.point((page << s->pageBits) + i);
+          if (p[0] < dims[0] && p[1] < dims[1] && p[2] < dims[2]) {
+            ASSERT_EQ(values[static_cast<std::size_t>(i)], v.at(p[0], p[1], p[2]));
+          }
+        }
+      }
     }
-  }
 }
 
 TEST(LebReader, ABudgetOfZeroDecodesEveryTimeAndStillAnswers) {
@@ -255,9 +304,11 @@ TEST(LebReader, ABudgetOfZeroDecodesEveryTimeAndStillAnswers) {
 
 class LebCorrupt : public ::testing::Test {
  protected:
+  virtual LebCoder coder() const { return LebCoder::Lead1; }
   void SetUp() override {
     LebEncodeOptions o;
     o.pageBits = 6;
+    o.coder = coder();
     bytes = encodeLeb(smooth({9, 7, 5}, 8), 8, o);
     layout = parseLebStream(bytes);
   }
@@ -462,6 +513,31 @@ TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {
   }
 }
 
+// The adaptive coder's bound (kAdaptiveDeltasPerByteBound): a 1x1x1 stream whose header then
+// claims 1025^3 (its one page table entry made to fit) holds 5 bytes of page for 1.08 G deltas.
+TEST(LebCorruptClaims, AnAdaptiveVolumeLargerThanItsPayloadIsRefused) {
+  LebEncodeOptions o;
+  o.gradients = false;
+  o.coder = LebCoder::Adaptive;
+  std::string b = encodeLeb(Volume<std::uint16_t>({1, 1, 1}, 9), 8, o);
+  auto put32 = [&](std::size_t at, std::uint64_t v) {
+    for (int i = 0; i < 4; ++i) b[at + static_cast<std::size_t>(i)] = static_cast<char>((v >> (8 * i)) & 0xff);
+  };
+  b[7] = 10;
+  for (std::size_t at : {8, 12, 16}) put32(at, 1025);
+  put32(32, crc32(std::string_view(b).substr(0, 32)));
+  put32(kLebHeaderBytes + 4, lebPageCount(LebGrid{10}, 12));  // page_count (its CRC comes later)
+  try {
+    parseLebStream(b);
+    FAIL();
+  } catch (const StreamError& e) {
+    EXPECT_NE(std::string(e.what()).find("bytes cannot hold the 1076890625 deltas of a 1025x1025x1025 volume (at "
+                                         "least 2^-14 bytes each)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(LebCorrupt, APageLengthPastTheEnd) {
   std::string b = bytes;
   const LebChannel& c = layout.channels[0];
@@ -505,10 +581,10 @@ TEST_F(LebCorrupt, ChecksumsCatchFlippedBits) {
   EXPECT_NE(errorOf(b).find("descriptor crc: CRC-32 mismatch (channel 1's descriptor is corrupt)"), std::string::npos);
 }
 
-TEST_F(LebCorrupt, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecoder) {
-  // Single-byte changes everywhere. Without repaired checksums every one must be reported; with
-  // repaired ones the decoder must throw StreamError or decode some volume (a changed raw bit
-  // of a delta is a valid stream), never fail in any other way.
+// Single-byte changes everywhere. Without repaired checksums every one must be reported; with
+// repaired ones the decoder must throw StreamError or decode some volume (a changed raw bit of a
+// delta is a valid stream), never fail in any other way.
+void expectEveryChangeCaught(const std::string& bytes, const std::function<void(std::string&)>& fixCrcs) {
   std::mt19937 rng(4);
   for (int trial = 0; trial < 3000; ++trial) {
     std::string b = bytes;
@@ -524,6 +600,65 @@ TEST_F(LebCorrupt, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecoder) {
       ADD_FAILURE() << "byte " << at << ": not a StreamError: " << e.what();
     }
   }
+}
+
+TEST_F(LebCorrupt, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecoder) {
+  expectEveryChangeCaught(bytes, [&](std::string& b) { fixCrcs(b); });
+}
+
+class LebCorruptAdaptive : public LebCorrupt {
+ protected:
+  LebCoder coder() const override { return LebCoder::Adaptive; }
+};
+
+TEST_F(LebCorruptAdaptive, TheIntactStreamDecodes) { EXPECT_EQ(errorOf(bytes), ""); }
+
+TEST_F(LebCorruptAdaptive, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecoder) {
+  expectEveryChangeCaught(bytes, [&](std::string& b) { fixCrcs(b); });
+}
+
+// Header bytes 4-5 and 22 (reference/leb/FORMAT.md, section 1): each version has its coder.
+TEST_F(LebCorruptAdaptive, TheVersionAndTheCoderAgree) {
+  std::string b = bytes;
+  b[22] = 0;
+  fixCrcs(b);
+  EXPECT_EQ(errorOf(b), "offset 22: coder: a version 3 stream has coder 1 (adaptive), got 0");
+  b = bytes;
+  b[4] = 2;
+  fixCrcs(b);
+  EXPECT_EQ(errorOf(b), "offset 22: coder: a version 2 stream has coder 0 (lead-1), got 1");
+  b = bytes;
+  b[4] = 4;
+  fixCrcs(b);
+  EXPECT_EQ(errorOf(b), "offset 4: version: expected 2 (lead-1) or 3 (adaptive), got 4");
+  b = bytes;
+  b[23] = 1;
+  fixCrcs(b);
+  EXPECT_EQ(errorOf(b), "offset 23: reserved: expected 0..0, got 1");
+}
+
+// A page cut short inside its values (length and CRCs made to agree): the adaptive reader names
+// the page.
+TEST_F(LebCorruptAdaptive, AShortenedPageIsAStreamErrorNamingIt) {
+  const LebChannel& c = layout.channels[0];
+  ASSERT_GE(c.pageOffset[1], 6u);
+  std::string b = bytes;
+  // The first page's last byte becomes the second page's first: the length table moves, the
+  // bytes stay; both pages' CRC-32s and the descriptor's are made again for the new boundary.
+  const std::uint64_t cut = c.pageOffset[1] - 1;
+  put32(b, pageLengthsAt(c), static_cast<std::uint32_t>(cut));
+  put32(b, pageLengthsAt(c) + 4, static_cast<std::uint32_t>(c.pageOffset[2] - cut));
+  const std::size_t crcs = c.descriptorOffset + c.descriptorBytes - 4 - 4 * c.storedPage.size();
+  put32(b, crcs, crc32(std::string_view(b).substr(c.payloadOffset, cut)));
+  put32(b, crcs + 4, crc32(std::string_view(b).substr(c.payloadOffset + cut, c.pageOffset[2] - cut)));
+  put32(b, c.descriptorOffset + c.descriptorBytes - 4,
+        crc32(std::string_view(b).substr(c.descriptorOffset, c.descriptorBytes - 4)));
+  const std::string e = errorOf(b);
+  EXPECT_NE(e.find("data page "), std::string::npos) << e;
+  EXPECT_EQ(e.find("CRC-32"), std::string::npos) << e;
+  EXPECT_TRUE(e.find("the page ends inside value") != std::string::npos ||
+              e.find("the first byte of an adaptive page must be 0") != std::string::npos)
+      << e;
 }
 
 }  // namespace

@@ -1,0 +1,242 @@
+#include "conformance/bench/leb_coder_bench.h"
+
+#include <cmath>
+#include <span>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "conformance/bench/baselines.h"
+#include "conformance/framework/progress.h"
+#include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/leb_codec.h"
+#include "reference/leb/leb_page.h"
+
+namespace voxref::conf {
+namespace {
+
+// One channel's deltas cut into the stream's stored pages (reference/leb/FORMAT.md, "Concepts").
+struct ChannelPages {
+  ref::LebChannelKind kind = ref::LebChannelKind::Data;
+  int components = 1, valueBits = 8;
+  std::vector<std::int32_t> deltas;
+  std::vector<std::span<const std::int32_t>> pages;
+};
+
+ChannelPages channelPages(const LebDataset& d, ref::LebChannelKind kind, int pageBits) {
+  ChannelPages c;
+  c.kind = kind;
+  const bool data = kind == ref::LebChannelKind::Data;
+  c.components = data ? 1 : 3;
+  c.valueBits = data ? d.bits : 8;
+  c.deltas = ref::lebDeltas(d.volume, d.bits, kind);
+  const ref::LebGrid grid = ref::lebGridCovering(d.volume.dims());
+  const ref::HzOrder order(grid);
+  std::size_t at = 0;
+  for (std::uint64_t p = 0; p < ref::lebPageCount(grid, pageBits); ++p) {
+    const std::size_t n = ref::insidePointsOfPage(order, d.volume.dims(), pageBits, p) * c.components;
+    if (n == 0) continue;
+    c.pages.emplace_back(c.deltas.data() + at, n);
+    at += n;
+  }
+  if (at != c.deltas.size()) throw std::logic_error("leb.coder: the pages do not hold the channel's deltas");
+  return c;
+}
+
+// What one coder made of one channel.
+struct CoderFigure {
+  std::string coder;
+  double bytes = 0.0;
+  Timing decode;
+};
+
+// The stream's bytes of a channel besides its pages: 12 per stored page (index, length, CRC-32),
+// 24 of descriptor (fields and CRC, no code table), and the header with the data channel.
+double tableBytes(const ChannelPages& c) {
+  return 12.0 * static_cast<double>(c.pages.size()) + 24.0 +
+         (c.kind == ref::LebChannelKind::Data ? static_cast<double>(ref::kLebHeaderBytes) : 0.0);
+}
+
+CoderFigure adaptive(const ChannelPages& c, int pageBits, int runs) {
+  std::vector<std::string> coded(c.pages.size());
+  double bytes = tableBytes(c);
+  for (std::size_t i = 0; i < c.pages.size(); ++i) {
+    coded[i] = ref::encodeAdaptivePage(c.pages[i], c.valueBits, c.components);
+    bytes += static_cast<double>(coded[i].size());
+  }
+  std::vector<std::int32_t> out;
+  auto decodeAll = [&](bool check) {
+    for (std::size_t i = 0; i < c.pages.size(); ++i) {
+      out.resize(c.pages[i].size());
+      ref::AdaptivePageReader r(coded[i], c.valueBits, c.components, 0, "page " + std::to_string(i));
+      r.read(out);
+      r.finish();
+      if (check && !std::equal(out.begin(), out.end(), c.pages[i].begin()))
+        throw std::runtime_error("leb.coder: an adaptive page did not decode to its deltas");
+    }
+  };
+  decodeAll(true);
+  return {"adaptive (pages of 2^" + std::to_string(pageBits) + ")", bytes, measure([&] { decodeAll(false); }, runs)};
+}
+
+// The paper's code: the stream's own channel (pages of 2^12), its pages decoded by the lead-1
+// decoder alone.
+CoderFigure lead1(const ref::LebStream& s, const ChannelPages& c, int runs) {
+  const ref::LebChannel* ch = s.channel(c.kind);
+  const ref::LebStats st = ref::lebStats(s);
+  double bytes = 0.0;
+  for (const ref::LebChannelStats& cs : st.channels)
+    if (cs.kind == c.kind) bytes = static_cast<double>(cs.compressedBytes());
+  if (c.kind == ref::LebChannelKind::Data) bytes += static_cast<double>(st.headerBytes);
+  if (ch->storedPage.size() != c.pages.size()) throw std::logic_error("leb.coder: the stream stores other pages");
+  std::vector<std::int32_t> out;
+  auto decodeAll = [&](bool check) {
+    for (std::size_t i = 0; i < c.pages.size(); ++i) {
+      out.resize(c.pages[i].size());
+      ch->decoder->decodePage(s.page(*ch, i), out, 0, "page");
+      if (check && !std::equal(out.begin(), out.end(), c.pages[i].begin()))
+        throw std::runtime_error("leb.coder: a lead-1 page did not decode to its deltas");
+    }
+  };
+  decodeAll(true);
+  return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs)};
+}
+
+CoderFigure baseline(const BaselineResult& b) {
+  return {b.codec + " (whole channel, no random access)", static_cast<double>(b.bytes), b.decompress};
+}
+
+// Order-0 entropy of the points' gradients taken as 3-byte symbols, in bytes: what a coder of
+// independent gradient vectors with their exact frequencies would need (an anchor, not a coder).
+double tripleEntropyBytes(const std::string& gradients) {
+  std::unordered_map<std::uint32_t, std::uint64_t> counts;
+  for (std::size_t i = 0; i + 2 < gradients.size(); i += 3)
+    ++counts[static_cast<std::uint8_t>(gradients[i]) |
+             (static_cast<std::uint32_t>(static_cast<std::uint8_t>(gradients[i + 1])) << 8) |
+             (static_cast<std::uint32_t>(static_cast<std::uint8_t>(gradients[i + 2])) << 16)];
+  const double n = static_cast<double>(gradients.size() / 3);
+  double bits = 0.0;
+  for (const auto& [symbol, count] : counts)
+    bits -= static_cast<double>(count) * std::log2(static_cast<double>(count) / n);
+  return bits / 8.0;
+}
+
+struct ChannelFigures {
+  ref::LebChannelKind kind;
+  double rawBytes = 0.0;
+  std::vector<CoderFigure> coders;  // lead-1, adaptive 2^12, adaptive 2^16, zstd -19, xz -9
+  double tripleEntropy = 0.0;       // gradients only
+};
+
+std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDataset& d) {
+  const int runs = o.quick ? 1 : 3;
+  ref::LebEncodeOptions options;
+  options.threads = o.threads;
+  const ref::LebStream s = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, options));
+  std::vector<ChannelFigures> figures;
+  for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
+    const bool data = kind == ref::LebChannelKind::Data;
+    const std::string raw = data ? dataBytes(d.volume, d.bits) : gradientBytes(d.volume);
+    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0};
+    const ChannelPages p12 = channelPages(d, kind, 12);
+    f.coders.push_back(lead1(s, p12, runs));
+    f.coders.push_back(adaptive(p12, 12, runs));
+    f.coders.push_back(adaptive(channelPages(d, kind, 16), 16, runs));
+    f.coders.push_back(baseline(zstdBaseline(raw, 19)));
+    f.coders.push_back(baseline(xzBaseline(raw, 9)));
+    if (!data) f.tripleEntropy = tripleEntropyBytes(raw);
+    figures.push_back(std::move(f));
+  }
+  return figures;
+}
+
+std::string ratioText(double r) { return formatNumber("%.3f:1", r); }
+
+}  // namespace
+
+BenchTable lebCoderBench(const BenchOptions& o) {
+  BenchTable t;
+  t.id = kLebCoderBenchId;
+  t.title = "LEB entropy stage: voxref's adaptive coder against lead-1 Huffman, zstd -19 and xz -9 (issue 18, goal 5)";
+  t.columns = {"volume",
+               "channel",
+               "coder",
+               "ratio",
+               "decode MB/s (1 thread)",
+               "goal: adaptive beats xz -9 (data), zstd -19 (gradients)"};
+  t.data["rows"] = nlohmann::json::array();
+  const std::vector<LebDataset> sets = folderLebDatasets(o);
+  Progress progress("voxref bench leb.coder", static_cast<long>(sets.size()));
+  long done = 0;
+  for (const LebDataset& d : sets) {
+    progress.update(done++, d.name);
+    if (!d.missing.empty()) {
+      t.rows.push_back({d.name, "", "not run: " + d.missing, "", "", ""});
+      continue;
+    }
+    for (const ChannelFigures& f : measureDataset(o, d)) {
+      const bool data = f.kind == ref::LebChannelKind::Data;
+      const std::string channel = data ? "data" : "gradients";
+      const CoderFigure& goal = f.coders[data ? 4 : 3];  // xz -9 for the data, zstd -19 for the gradients
+      nlohmann::json row = {
+          {"volume", d.name}, {"channel", channel}, {"raw_bytes", f.rawBytes}, {"coders", nlohmann::json::array()}};
+      for (std::size_t i = 0; i < f.coders.size(); ++i) {
+        const CoderFigure& c = f.coders[i];
+        std::string verdict;
+        if (i == 1 || i == 2) {
+          const double against = goal.bytes / c.bytes;  // the coder's ratio over the goal's
+          verdict = formatNumber("%.2f", against) + " of " + (data ? "xz -9" : "zstd -19") +
+                    "'s ratio: " + (against > 1.0 ? "beats it" : "below it");
+        }
+        t.rows.push_back({d.name, channel, c.coder, ratioText(f.rawBytes / c.bytes),
+                          formatNumber("%.1f", f.rawBytes / 1e6 / c.decode.median), verdict});
+        row["coders"].push_back(
+            {{"coder", c.coder}, {"bytes", c.bytes}, {"ratio", f.rawBytes / c.bytes}, {"decode", toJson(c.decode)}});
+      }
+      if (!data) {
+        t.rows.push_back({d.name, channel,
+                          "anchor: order-0 entropy of the gradient vectors (3-byte symbols; not a coder)",
+                          ratioText(f.rawBytes / f.tripleEntropy), "-", ""});
+        row["triple_entropy_bytes"] = f.tripleEntropy;
+      }
+      t.data["rows"].push_back(row);
+    }
+  }
+  progress.finish();
+  t.notes =
+      "Ratio: the channel's raw bytes (samples at 1 byte; 3 bytes of quantized gradient a sample) over the coded "
+      "bytes. "
+      "LEB and adaptive rows count the stream's page table (12 bytes a stored page), the descriptor and, for the data, "
+      "the header; the lead-1 rows also its code table. Both code the same deltas (the paper's split-edge prediction, "
+      "pages coded on their own, so random access stays); the adaptive coder's contexts are the page's previous two "
+      "deltas, its models restart with every page (reference/leb/FORMAT.md, 'Adaptive pages'). zstd and xz compress "
+      "the raw channel whole (zstd -19, xz -9; no random access). Decode MB/s: raw bytes per second of decoding every "
+      "page "
+      "(or the whole channel), one thread. The gradient anchor is the order-0 entropy of the gradient vectors: "
+      "coding each point's three components as one symbol, with no prediction, would reach it.";
+  return t;
+}
+
+StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
+  StudyGroup g{"entropy stage (" + d.name + ")",
+               "none: every coder decodes bit for bit (checked in the run)",
+               "decoding the whole volume's deltas (data and gradients), one thread; zstd and xz: the raw bytes",
+               "the coded bytes (data + gradients)",
+               true,
+               {},
+               "The adaptive coder and lead-1 keep page random access; zstd and xz do not."};
+  const std::vector<ChannelFigures> f = measureDataset(o, d);
+  for (std::size_t i = 0; i < f[0].coders.size(); ++i) {
+    StudyVariant v;
+    v.name = f[0].coders[i].coder;
+    v.error = 0.0;
+    const Timing& a = f[0].coders[i].decode;
+    const Timing& b = f[1].coders[i].decode;
+    v.time = Timing{a.median + b.median, a.min + b.min, a.max + b.max, std::min(a.runs, b.runs), false};
+    v.memoryBytes = f[0].coders[i].bytes + f[1].coders[i].bytes;
+    v.figures = {{"lossless", true}, {"ratio", (f[0].rawBytes + f[1].rawBytes) / v.memoryBytes}};
+    g.variants.push_back(v);
+  }
+  return g;
+}
+
+}  // namespace voxref::conf
