@@ -49,10 +49,10 @@ struct CoderFigure {
   Timing decode;
 };
 
-// The stream's bytes of a channel besides its pages: 12 per stored page (index, length, CRC-32),
-// 24 of descriptor (fields and CRC, no code table), and the header with the data channel.
+// The stream's bytes of an adaptive channel besides its pages: its descriptor (no code table; 12
+// bytes a stored page) and, with the data channel, the header.
 double tableBytes(const ChannelPages& c) {
-  return 12.0 * static_cast<double>(c.pages.size()) + 24.0 +
+  return static_cast<double>(ref::lebDescriptorSize(c.valueBits, c.pages.size(), ref::LebCoder::Adaptive)) +
          (c.kind == ref::LebChannelKind::Data ? static_cast<double>(ref::kLebHeaderBytes) : 0.0);
 }
 

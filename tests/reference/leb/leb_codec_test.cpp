@@ -619,22 +619,17 @@ TEST_F(LebCorruptAdaptive, EveryChangeIsCaughtByAChecksumAndNoneCrashesTheDecode
 
 // Header bytes 4-5 and 22 (reference/leb/FORMAT.md, section 1): each version has its coder.
 TEST_F(LebCorruptAdaptive, TheVersionAndTheCoderAgree) {
-  std::string b = bytes;
-  b[22] = 0;
-  fixCrcs(b);
-  EXPECT_EQ(errorOf(b), "offset 22: coder: a version 3 stream has coder 1 (adaptive), got 0");
-  b = bytes;
-  b[4] = 2;
-  fixCrcs(b);
-  EXPECT_EQ(errorOf(b), "offset 22: coder: a version 2 stream has coder 0 (lead-1), got 1");
-  b = bytes;
-  b[4] = 4;
-  fixCrcs(b);
-  EXPECT_EQ(errorOf(b), "offset 4: version: expected 2 (lead-1) or 3 (adaptive), got 4");
-  b = bytes;
-  b[23] = 1;
-  fixCrcs(b);
-  EXPECT_EQ(errorOf(b), "offset 23: reserved: expected 0..0, got 1");
+  // The stream with byte `at` set to `value`, its checksums made again.
+  auto errorWith = [&](std::size_t at, char value) {
+    std::string b = bytes;
+    b[at] = value;
+    fixCrcs(b);
+    return errorOf(b);
+  };
+  EXPECT_EQ(errorWith(22, 0), "offset 22: coder: a version 3 stream has coder 1 (adaptive), got 0");
+  EXPECT_EQ(errorWith(4, 2), "offset 22: coder: a version 2 stream has coder 0 (lead-1), got 1");
+  EXPECT_EQ(errorWith(4, 4), "offset 4: version: expected 2 (lead-1) or 3 (adaptive), got 4");
+  EXPECT_EQ(errorWith(23, 1), "offset 23: reserved: expected 0..0, got 1");
 }
 
 // A page cut short inside its values (length and CRCs made to agree): the adaptive reader names
