@@ -45,27 +45,17 @@ FieldSample DenseGridField::at(const GridPoint& p) {
   return {values_[i], {gradients_[3 * i], gradients_[3 * i + 1], gradients_[3 * i + 2]}};
 }
 
-CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
-                                         std::size_t pointCacheEntries)
+CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes)
     : grid_(stream->grid), dims_(stream->dims), reader_(stream, pageCacheBytes) {
   if (stream->channel(LebChannelKind::Gradients) == nullptr)
     throw std::invalid_argument(
         "the stream has no gradients channel (encoded with --no-gradients): isosurfaces need the gradients for "
         "shading");
-  // Modulo a power of two at least the grid's points, no two points share a slot.
-  const std::uint64_t slots = std::min<std::uint64_t>(std::bit_floor(std::max<std::size_t>(1, pointCacheEntries)),
-                                                      std::bit_ceil(grid_.pointCount()));
-  points_.resize(static_cast<std::size_t>(slots));
-  mask_ = slots - 1;
 }
 
 FieldSample CompressedGridField::at(const GridPoint& p) {
-  const std::uint64_t key = grid_.linearIndex(p);
-  CachedPoint& slot = points_[static_cast<std::size_t>(key & mask_)];
-  if (slot.key == key) return slot.sample;
   const LebReader::SampleAndGradient both = reader_.sampleAndGradient(p);
-  slot = {key, FieldSample{both.sample, both.gradient}};
-  return slot.sample;
+  return FieldSample{both.sample, both.gradient};
 }
 
 }  // namespace voxref::ref

@@ -59,31 +59,21 @@ class DenseGridField final : public GridField {
 
 // The field read from a compressed stream with a gradients channel: every value comes from
 // LebReader (pages decoded on demand, kept in its LRU cache, one walk of the hierarchy for a
-// point's sample and gradient). Values already asked for are kept in a direct-mapped point cache
-// (extraction asks for every mesh vertex several times): slot = linear index modulo its size, the
-// power of two at most `pointCacheEntries`, or the one at least the grid's points if smaller;
-// 16 bytes a slot, a newer point replacing an older one in its slot. Grid neighbours along x share cache lines,
-// which a hashed table would scatter. Throws std::invalid_argument for a stream without
+// point's sample and gradient; points already asked for come from its memo, whose slots keep grid
+// neighbours together: leb_reader.h). Throws std::invalid_argument for a stream without
 // gradients.
 class CompressedGridField final : public GridField {
  public:
-  CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes,
-                      std::size_t pointCacheEntries = 1u << 22);
+  CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes);
   const LebGrid& grid() const override { return grid_; }
   const Dims3& volumeDims() const override { return dims_; }
   FieldSample at(const GridPoint& p) override;
   const LebReader& reader() const { return reader_; }
 
  private:
-  struct CachedPoint {
-    std::uint64_t key = ~std::uint64_t{0};  // the linear index; all ones for an empty slot
-    FieldSample sample;
-  };
   LebGrid grid_;
   Dims3 dims_;
   LebReader reader_;
-  std::vector<CachedPoint> points_;
-  std::uint64_t mask_ = 0;
 };
 
 // The gradient as a unit-free vector (components / 127).

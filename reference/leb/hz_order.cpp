@@ -35,6 +35,44 @@ HzOrder::HzOrder(const LebGrid& grid) : grid_(makeLebGrid(grid.k)) {
   if (levelBegin_.back() != grid_.pointCount()) throw std::logic_error("hierarchical z-order does not cover the grid");
 }
 
+bool HzOrder::allInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const {
+  end = std::min(end, size());
+  const int side = grid_.side();
+  for (std::uint64_t h = begin; h < std::min<std::uint64_t>(end, 8); ++h)
+    for (int a = 0; a < 3; ++a)
+      if (((h >> a) & 1u) && side >= dims[static_cast<std::size_t>(a)]) return false;
+  for (int level = 0; level < grid_.levelCount(); ++level) {
+    if (levelBegin(level + 1) <= begin) continue;
+    if (levelBegin(level) >= end) break;
+    const Level& lv = levels_[static_cast<std::size_t>(level)];
+    const int scale = 1 << lv.scaleLog2, cellSide = 2 * scale;
+    for (unsigned b = 0; b < 8; ++b) {
+      const Block& blk = lv.blocks[b];
+      const std::uint64_t orientations = blk.orientations.size();
+      if (blk.cells == 0 || blk.begin >= end || blk.begin + blk.cells * orientations <= begin) continue;
+      int axis[3] = {0, 0, 0}, nf = 0;
+      for (int a = 0; a < 3; ++a) {
+        if ((b >> a) & 1u) {
+          if (side >= dims[static_cast<std::size_t>(a)]) return false;  // the block's far boundary
+        } else {
+          axis[nf++] = a;
+        }
+      }
+      if (nf == 0) continue;  // the one point at (side, side, side): inside, as just checked
+      // The block's cells of the range lie in the Morton node of their first and last codes'
+      // common prefix: a cube of 2^r cells from c0 (mortonDescend's nodes).
+      const std::uint64_t mlo = begin > blk.begin ? (begin - blk.begin) / orientations : 0;
+      const std::uint64_t mhi = std::min(blk.cells, (end - blk.begin + orientations - 1) / orientations);
+      const int r = (std::bit_width(mlo ^ (mhi - 1)) + nf - 1) / nf;
+      int c0[3] = {0, 0, 0};
+      mortonDecode(mlo >> (nf * r) << (nf * r), nf, c0);
+      for (int i = 0; i < nf; ++i)  // the node's last cell, at its odd offset: p = cellSide c + scale
+        if (cellSide * (c0[i] + (1 << r) - 1) + scale >= dims[static_cast<std::size_t>(axis[i])]) return false;
+    }
+  }
+  return true;
+}
+
 std::uint64_t HzOrder::index(const GridPoint& p) const {
   const LebPointClass c = classifyPoint(grid_, p);
   if (c.level < 0) return (p[0] ? 1u : 0u) | (p[1] ? 2u : 0u) | (p[2] ? 4u : 0u);

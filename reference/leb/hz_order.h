@@ -51,6 +51,12 @@ class HzOrder {
   // corner) comes with scaleLog2 k and no odd axes.
   template <class F>
   void forEachInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
+  // True only if every grid point with index in [begin, end) lies inside the box [0, dims): then
+  // forEachInside would call f for each of them. Conservative: each block's part of the range is
+  // bounded by the Morton node of its first and last cells' common prefix, and false may come for a
+  // range whose points all lie inside (a caller then walks them). Costs a few operations per level,
+  // not per point.
+  bool allInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const;
 
  private:
   friend class HzCursor;

@@ -53,16 +53,31 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
                                               std::uint64_t page) {
   LebPageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
-  std::vector<std::int16_t> out((std::size_t{1} << s.pageBits) * comps, 0);
-  const std::uint64_t begin = page << s.pageBits;
-  std::uint64_t points = 0;
-  order.forEachInside(
-      s.dims, begin, (page + 1) << s.pageBits, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
-        ++points;
-        for (std::size_t k = 0; k < comps; ++k)
-          out[static_cast<std::size_t>(h - begin) * comps + k] = static_cast<std::int16_t>(reader.next());
-      });
-  finishPage(reader, points, c, page);
+  const std::size_t size = std::size_t{1} << s.pageBits;
+  std::vector<std::int16_t> out(size * comps, 0);
+  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
+  // A page wholly inside the volume (most of them) holds every index of it, in order.
+  if (order.allInside(s.dims, begin, end)) {
+    std::vector<std::int32_t> deltas(static_cast<std::size_t>(end - begin) * comps);
+    if (!deltas.empty()) reader.read(deltas);
+    std::transform(deltas.begin(), deltas.end(), out.begin(),
+                   [](std::int32_t d) { return static_cast<std::int16_t>(d); });
+    finishPage(reader, end - begin, c, page);
+    return out;
+  }
+  // Otherwise the page's points inside the volume, by their place in the page; then their deltas
+  // in one run (LebPageReader::read, the order next() would give them), placed after.
+  std::vector<std::uint32_t> at;
+  at.reserve(size);
+  order.forEachInside(s.dims, begin, end, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
+    at.push_back(static_cast<std::uint32_t>(h - begin));
+  });
+  std::vector<std::int32_t> deltas(at.size() * comps);
+  if (!at.empty()) reader.read(deltas);
+  for (std::size_t i = 0; i < at.size(); ++i)
+    for (std::size_t k = 0; k < comps; ++k)
+      out[static_cast<std::size_t>(at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
+  finishPage(reader, at.size(), c, page);
   return out;
 }
 

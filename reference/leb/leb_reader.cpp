@@ -1,5 +1,7 @@
 #include "reference/leb/leb_reader.h"
 
+#include <algorithm>
+#include <bit>
 #include <stdexcept>
 #include <string>
 
@@ -8,14 +10,40 @@
 
 namespace voxref::ref {
 
+namespace {
+
+// Bricks of 4^3 points: the memo's slot order (leb_reader.h).
+constexpr int kBrickLog2 = 2;
+
+}  // namespace
+
 LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheBudgetBytes)
-    : stream_(std::move(stream)),
-      order_(stream_->grid),
-      cache_(cacheBudgetBytes),
-      memoCapacity_(cacheBudgetBytes / kMemoEntryBytes) {}
+    : stream_(std::move(stream)), order_(stream_->grid), cache_(cacheBudgetBytes) {
+  constexpr std::uint64_t kMaxAxis = (std::uint64_t{1} << kMaxLebK) + 1;
+  static_assert(kMaxAxis * kMaxAxis * kMaxAxis < ~std::uint32_t{0}, "a grid's linear index fits the memo's key");
+  const auto n = static_cast<std::uint64_t>(stream_->grid.pointsPerAxis());
+  bricksPerAxis_ = (n + (1u << kBrickLog2) - 1) >> kBrickLog2;
+  const std::uint64_t brickedPoints = bricksPerAxis_ * bricksPerAxis_ * bricksPerAxis_ << (3 * kBrickLog2);
+  const std::uint64_t slots =
+      std::min<std::uint64_t>(std::max<std::uint64_t>(kMinMemoSlots, std::bit_floor(cacheBudgetBytes / kMemoSlotBytes)),
+                              std::bit_ceil(brickedPoints));
+  memo_.resize(static_cast<std::size_t>(slots));
+  memoMask_ = slots - 1;
+}
 
 void LebReader::beginQuery() {
-  if (memo_.size() > memoCapacity_) memo_.clear();
+  ++query_;
+  if (!queryOwn_.empty()) queryOwn_.clear();
+}
+
+LebReader::MemoSlot& LebReader::memoSlot(const GridPoint& p) {
+  constexpr unsigned kIn = (1u << kBrickLog2) - 1;
+  const auto x = static_cast<std::uint64_t>(p[0]), y = static_cast<std::uint64_t>(p[1]),
+             z = static_cast<std::uint64_t>(p[2]);
+  const std::uint64_t brick =
+      ((z >> kBrickLog2) * bricksPerAxis_ + (y >> kBrickLog2)) * bricksPerAxis_ + (x >> kBrickLog2);
+  const std::uint64_t within = (((z & kIn) << kBrickLog2 | (y & kIn)) << kBrickLog2) | (x & kIn);
+  return memo_[static_cast<std::size_t>(((brick << (3 * kBrickLog2)) | within) & memoMask_)];
 }
 
 const LebChannel& LebReader::channel(LebChannelKind kind) const {
@@ -31,12 +59,16 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   if (!grid.contains(p)) order_.index(p);  // throws, naming the point
   // Keyed by the grid's linear index, which costs no walk of the hierarchy: the hierarchical
   // index is needed only for a point the memo lacks (to find its page).
-  const std::uint64_t memoKey = grid.linearIndex(p);
+  const auto memoKey = static_cast<std::uint32_t>(grid.linearIndex(p));
+  MemoSlot& slot = memoSlot(p);
   Known have;
-  if (const Known* known = memo_.find(memoKey)) {
-    if ((want & ~known->channels) == 0) return *known;
-    have = *known;
+  if (slot.key == memoKey) {
+    have.v = {slot.data, slot.gradient[0], slot.gradient[1], slot.gradient[2]};
+    have.channels = slot.channels;
+  } else if (const Known* own = queryOwn_.empty() ? nullptr : queryOwn_.find(memoKey)) {
+    have = *own;
   }
+  if ((want & ~have.channels) == 0) return have;
   const unsigned need = want & ~have.channels;
   std::array<std::int32_t, 4> pred{0, 0, 0, 0};
   const LebPointClass pc = classifyPoint(grid, p);
@@ -49,20 +81,30 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   const std::uint64_t h = inside ? order_.index(p) : 0, page = h >> stream_->pageBits;
   for (const LebChannel& c : stream_->channels) {
     if (!(need & channelBit(c.kind))) continue;
-    const std::size_t slot = c.kind == LebChannelKind::Data ? 0 : 1, comps = static_cast<std::size_t>(c.components);
-    for (std::size_t k = 0; k < comps; ++k) have.v[slot + k] = pred[slot + k];
+    const std::size_t first = c.kind == LebChannelKind::Data ? 0 : 1, comps = static_cast<std::size_t>(c.components);
+    for (std::size_t k = 0; k < comps; ++k) have.v[first + k] = pred[first + k];
     if (inside) {
       const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
       PageCache::Page deltas = cache_.find(key);  // the hit path builds no std::function
       if (!deltas) deltas = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;
       for (std::size_t k = 0; k < comps; ++k)
-        have.v[slot + k] = reconstructSample(pred[slot + k], (*deltas)[at + k], c.valueBits, c.isSigned);
+        have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);
     }
     ++reconstructed_;
   }
   have.channels |= need;
-  if (auto [entry, inserted] = memo_.try_emplace(memoKey, have); !inserted) entry = have;
+  // The slot, unless another point of this query holds it (the recursion may have filled it).
+  if (slot.key == memoKey || slot.key == ~std::uint32_t{0} || slot.query != query_) {
+    slot = {
+        memoKey,
+        query_,
+        have.v[0],
+        {static_cast<std::int8_t>(have.v[1]), static_cast<std::int8_t>(have.v[2]), static_cast<std::int8_t>(have.v[3])},
+        static_cast<std::uint8_t>(have.channels)};
+  } else if (auto [entry, inserted] = queryOwn_.try_emplace(memoKey, have); !inserted) {
+    entry = have;
+  }
   return have;
 }
 

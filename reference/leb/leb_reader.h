@@ -6,17 +6,24 @@
 // endpoint values are reconstructed the same way (recursively: the "reconstruction mask"; every
 // endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels).
 // Reconstructed values are memoised per grid point (the channels a query asked for: one entry
-// holds a point's sample and its gradient, and a query for both walks the hierarchy once), and the memo is kept
-// between queries while it holds at most cacheBudgetBytes / kMemoEntryBytes entries (it is
-// emptied before a query when it holds more): neighbouring queries share their coarse ancestors,
-// so a query in a region already visited reconstructs little more than its own point. A point is
-// reconstructed at most once per query. Bit-identical to decodeLeb.
+// holds a point's sample and its gradient, and a query for both walks the hierarchy once) in a
+// direct-mapped table kept between queries: slot = the point's index in bricks of 4^3 points,
+// modulo the table's size, so a point's split-edge endpoints and its grid neighbours share cache
+// lines (a hashed table scatters them: the lookups of a hashed memo were most of the first mesh's
+// cost over the uncompressed grid). A newer point replaces an older one in its slot, except one
+// reconstructed in the same query: that one stays, and the newer goes to a small table of the
+// query's own (emptied when the next query begins), so a point is still reconstructed at most
+// once per query, whatever the table's size. Neighbouring queries share their coarse ancestors,
+// so a query in a region already visited reconstructs little more than its own point.
+// Bit-identical to decodeLeb.
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
-// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo (about the budget
-// again: kMemoEntryBytes covers an entry of its table; beyond that, the entries of one query:
-// the points asked for and their coarser split-edge ancestors), plus reconstructPage's result,
-// 2^pageBits x components x 4 bytes (at most 12 MiB).
+// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo: kMemoSlotBytes a
+// slot, the power of two of slots at most cacheBudgetBytes / kMemoSlotBytes (at least
+// kMinMemoSlots, and no more than the grid's bricks need), plus the query's own table (the
+// points of one query that met a slot taken in the same query: at most its points and their
+// coarser split-edge ancestors), plus reconstructPage's result, 2^pageBits x components x 4 bytes
+// (at most 12 MiB).
 // Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
 // page (when it is decoded), std::invalid_argument for a point outside the grid or a channel the
 // stream lacks. Not thread-safe: use one reader per thread (they can share the stream).
@@ -63,23 +70,37 @@ class LebReader {
     std::array<std::int32_t, 4> v{};
     unsigned channels = 0;
   };
-  // What the memo's capacity charges an entry, in bytes: the most its flat table (flat_u64_map.h)
-  // spends on one, 6 slots of a key and an entry (while the table doubles).
-  static constexpr std::size_t kMemoEntryBytes = 6 * (8 + sizeof(Known));
+  // A slot of the memo's direct-mapped table.
+  static constexpr std::size_t kMemoSlotBytes = 16;
+  static constexpr std::size_t kMinMemoSlots = 4096;
 
  private:
-  // Starts a query: empties the memo if it is over its capacity.
+  // Starts a query: a new query number, and the previous query's own table emptied.
   void beginQuery();
   // The channels of `want` (and any the memo already knows) at p.
   Known valueAt(unsigned want, const GridPoint& p);
   const LebChannel& channel(LebChannelKind kind) const;
   static unsigned channelBit(LebChannelKind kind) { return kind == LebChannelKind::Data ? 1u : 2u; }
 
+  // A memo slot: the point's linear index (all ones: empty), the query that wrote it, the data
+  // value and the gradient's components (a gradient is 8 bits: gradients.h), the known channels.
+  struct MemoSlot {
+    std::uint32_t key = ~std::uint32_t{0};
+    std::uint32_t query = 0;
+    std::int32_t data = 0;
+    std::array<std::int8_t, 3> gradient{};
+    std::uint8_t channels = 0;
+  };
+  static_assert(sizeof(MemoSlot) == kMemoSlotBytes);
+  MemoSlot& memoSlot(const GridPoint& p);
+
   std::shared_ptr<const LebStream> stream_;
   HzOrder order_;
   PageCache cache_;
-  std::size_t memoCapacity_;
-  FlatU64Map<Known> memo_;  // by linear index
+  std::vector<MemoSlot> memo_;
+  std::uint64_t memoMask_ = 0, bricksPerAxis_ = 0;
+  std::uint32_t query_ = 0;
+  FlatU64Map<Known> queryOwn_;  // this query's points whose slot another of its points holds
   std::uint64_t reconstructed_ = 0;
 };
 

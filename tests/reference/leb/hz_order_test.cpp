@@ -133,5 +133,57 @@ TEST(HzOrder, ForEachInsideIsTheWalkFilteredByTheBox) {
   }
 }
 
+// allInside is true only for ranges whose every point lies inside the box (the full walk checks
+// each), always for a box that holds the grid, and for most pages of a box that cuts it.
+TEST(HzOrder, AllInsideHoldsOnlyForRangesWhollyInsideTheBox) {
+  std::mt19937 rng(31);
+  for (int k : {0, 1, 3, 5}) {
+    const LebGrid g = makeLebGrid(k);
+    const HzOrder order(g);
+    const int n = g.pointsPerAxis();
+    std::uint64_t trues = 0, wholly = 0;
+    for (int trial = 0; trial < 200; ++trial) {
+      std::array<int, 3> dims;
+      for (int a = 0; a < 3; ++a) dims[a] = 1 + static_cast<int>(rng() % static_cast<unsigned>(n));
+      if (trial % 4 == 0) dims = {n, n, n};
+      // Ranges of pages (aligned, 2^p indices) and arbitrary ones.
+      std::uint64_t begin = rng() % order.size(), end = begin + rng() % (order.size() - begin + 1);
+      if (trial % 2 == 1) {
+        const int p = static_cast<int>(rng() % 7);
+        begin = (begin >> p) << p;
+        end = begin + (std::uint64_t{1} << p);
+      }
+      bool all = true;
+      for (HzCursor c(order, begin); !c.done() && c.index() < end; c.next())
+        all = all && c.point()[0] < dims[0] && c.point()[1] < dims[1] && c.point()[2] < dims[2];
+      const bool claimed = order.allInside(dims, begin, end);
+      EXPECT_FALSE(claimed && !all) << "k " << k << ", box " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", ["
+                                    << begin << ", " << end << ")";
+      if (dims == std::array<int, 3>{n, n, n}) {
+        EXPECT_TRUE(claimed) << "k " << k << ": the box holds the grid";
+      }
+      trues += claimed ? 1 : 0;
+      wholly += all ? 1 : 0;
+    }
+    EXPECT_GT(trues, wholly / 2) << "k " << k << ": allInside should find most ranges that lie wholly inside";
+  }
+  // The engine's box in its grid of k = 8: most stored pages of 2^12 lie wholly inside.
+  const HzOrder order(makeLebGrid(8));
+  const std::array<int, 3> engine{256, 256, 128};
+  std::uint64_t pages = 0, inside = 0, claimed = 0;
+  for (std::uint64_t page = 0; page < (order.size() >> 12); page += 7) {
+    std::uint64_t count = 0;
+    order.forEachInside(engine, page << 12, (page + 1) << 12,
+                        [&](std::uint64_t, const GridPoint&, int, int, unsigned) { ++count; });
+    pages += 1;
+    inside += count == 4096 ? 1 : 0;
+    claimed += order.allInside(engine, page << 12, (page + 1) << 12) ? 1 : 0;
+    if (order.allInside(engine, page << 12, (page + 1) << 12)) {
+      EXPECT_EQ(count, 4096u) << "page " << page;
+    }
+  }
+  EXPECT_GT(claimed, inside * 9 / 10) << pages << " pages";
+}
+
 }  // namespace
 }  // namespace voxref::ref
