@@ -1,7 +1,5 @@
 #include "reference/iso/grid_field.h"
 
-#include <algorithm>
-#include <bit>
 #include <stdexcept>
 #include <string>
 

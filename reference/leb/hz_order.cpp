@@ -41,36 +41,19 @@ bool HzOrder::allInside(const std::array<int, 3>& dims, std::uint64_t begin, std
   for (std::uint64_t h = begin; h < std::min<std::uint64_t>(end, 8); ++h)
     for (int a = 0; a < 3; ++a)
       if (((h >> a) & 1u) && side >= dims[static_cast<std::size_t>(a)]) return false;
-  for (int level = 0; level < grid_.levelCount(); ++level) {
-    if (levelBegin(level + 1) <= begin) continue;
-    if (levelBegin(level) >= end) break;
-    const Level& lv = levels_[static_cast<std::size_t>(level)];
-    const int scale = 1 << lv.scaleLog2, cellSide = 2 * scale;
-    for (unsigned b = 0; b < 8; ++b) {
-      const Block& blk = lv.blocks[b];
-      const std::uint64_t orientations = blk.orientations.size();
-      if (blk.cells == 0 || blk.begin >= end || blk.begin + blk.cells * orientations <= begin) continue;
-      int axis[3] = {0, 0, 0}, nf = 0;
-      for (int a = 0; a < 3; ++a) {
-        if ((b >> a) & 1u) {
-          if (side >= dims[static_cast<std::size_t>(a)]) return false;  // the block's far boundary
-        } else {
-          axis[nf++] = a;
-        }
-      }
-      if (nf == 0) continue;  // the one point at (side, side, side): inside, as just checked
-      // The block's cells of the range lie in the Morton node of their first and last codes'
-      // common prefix: a cube of 2^r cells from c0 (mortonDescend's nodes).
-      const std::uint64_t mlo = begin > blk.begin ? (begin - blk.begin) / orientations : 0;
-      const std::uint64_t mhi = std::min(blk.cells, (end - blk.begin + orientations - 1) / orientations);
-      const int r = (std::bit_width(mlo ^ (mhi - 1)) + nf - 1) / nf;
-      int c0[3] = {0, 0, 0};
-      mortonDecode(mlo >> (nf * r) << (nf * r), nf, c0);
-      for (int i = 0; i < nf; ++i)  // the node's last cell, at its odd offset: p = cellSide c + scale
-        if (cellSide * (c0[i] + (1 << r) - 1) + scale >= dims[static_cast<std::size_t>(axis[i])]) return false;
-    }
-  }
-  return true;
+  return forEachBlockPart(dims, begin, end, [&](const BlockPart& part) {
+    if (part.boundaryOutside) return false;
+    const int nf = part.nf, scale = 1 << part.lv.scaleLog2, cellSide = 2 * scale;
+    if (nf == 0) return true;  // the one point at (side, side, side): inside, as just checked
+    // The block's cells of the range lie in the Morton node of their first and last codes'
+    // common prefix: a cube of 2^r cells from c0 (mortonDescend's nodes).
+    const int r = (std::bit_width(part.mlo ^ (part.mhi - 1)) + nf - 1) / nf;
+    int c0[3] = {0, 0, 0};
+    mortonDecode(part.mlo >> (nf * r) << (nf * r), nf, c0);
+    for (int i = 0; i < nf; ++i)  // the node's last cell, at its odd offset: p = cellSide c + scale
+      if (cellSide * (c0[i] + (1 << r) - 1) + scale >= dims[static_cast<std::size_t>(part.axis[i])]) return false;
+    return true;
+  });
 }
 
 std::uint64_t HzOrder::index(const GridPoint& p) const {

@@ -60,6 +60,22 @@ class HzOrder {
 
  private:
   friend class HzCursor;
+  struct Block;
+  struct Level;
+  // One block's part of an index range: its level, its cells [mlo, mhi) of the range, its free
+  // axes (axis[0..nf)), and whether one of its far-boundary axes lies outside the box.
+  struct BlockPart {
+    int level;
+    const Level& lv;
+    const Block& blk;
+    std::uint64_t mlo, mhi;
+    int axis[3], nf;
+    bool boundaryOutside;
+  };
+  // Calls f(part) for each block with indices in [begin, end) (end at most size()), in index
+  // order, while f returns true; returns false when f stopped it.
+  template <class F>
+  bool forEachBlockPart(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
   struct Block {
     std::uint64_t begin = 0;  // first index
     std::uint64_t cells = 0;  // cells in the block (0 when no orientation is allowed)
@@ -217,6 +233,37 @@ void mortonDescend(int nf, const int* limit, int r, std::uint64_t m0, const int*
 }  // namespace hz_detail
 
 template <class F>
+bool HzOrder::forEachBlockPart(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const {
+  const int side = grid_.side();
+  for (int level = 0; level < grid_.levelCount(); ++level) {
+    if (levelBegin(level + 1) <= begin) continue;
+    if (levelBegin(level) >= end) break;
+    const Level& lv = levels_[static_cast<std::size_t>(level)];
+    for (unsigned b = 0; b < 8; ++b) {
+      const Block& blk = lv.blocks[b];
+      const std::uint64_t orientations = blk.orientations.size();
+      if (blk.cells == 0 || blk.begin >= end || blk.begin + blk.cells * orientations <= begin) continue;
+      BlockPart part{level,
+                     lv,
+                     blk,
+                     begin > blk.begin ? (begin - blk.begin) / orientations : 0,
+                     std::min(blk.cells, (end - blk.begin + orientations - 1) / orientations),
+                     {0, 0, 0},
+                     0,
+                     false};
+      for (int a = 0; a < 3; ++a) {
+        if ((b >> a) & 1u)
+          part.boundaryOutside = part.boundaryOutside || side >= dims[static_cast<std::size_t>(a)];
+        else
+          part.axis[part.nf++] = a;
+      }
+      if (!f(part)) return false;
+    }
+  }
+  return true;
+}
+
+template <class F>
 void HzOrder::forEachInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const {
   end = std::min(end, size());
   const int side = grid_.side();
@@ -225,45 +272,32 @@ void HzOrder::forEachInside(const std::array<int, 3>& dims, std::uint64_t begin,
     const GridPoint p{(h & 1) ? side : 0, (h & 2) ? side : 0, (h & 4) ? side : 0};
     if (inside(p)) f(h, p, -1, grid_.k, 0u);
   }
-  for (int level = 0; level < grid_.levelCount(); ++level) {
-    if (levelBegin(level + 1) <= begin) continue;
-    if (levelBegin(level) >= end) break;
-    const Level& lv = levels_[static_cast<std::size_t>(level)];
-    const int scale = 1 << lv.scaleLog2, cellSide = 2 * scale;
-    for (unsigned b = 0; b < 8; ++b) {
-      const Block& blk = lv.blocks[b];
-      const std::uint64_t orientations = blk.orientations.size();
-      if (blk.cells == 0 || blk.begin >= end || blk.begin + blk.cells * orientations <= begin) continue;
-      int axis[3] = {0, 0, 0}, limit[3] = {0, 0, 0}, nf = 0;
-      bool boundaryOutside = false;
-      for (int a = 0; a < 3; ++a) {
-        if ((b >> a) & 1u) {
-          boundaryOutside = boundaryOutside || side >= dims[a];
-        } else {
-          axis[nf] = a;
-          limit[nf++] = (dims[a] + cellSide - 1) / cellSide;  // cells c with cellSide c < dims[a]
-        }
+  forEachBlockPart(dims, begin, end, [&](const BlockPart& part) {
+    if (part.boundaryOutside) return true;
+    const Level& lv = part.lv;
+    const Block& blk = part.blk;
+    const std::uint64_t orientations = blk.orientations.size();
+    const int scale = 1 << lv.scaleLog2, cellSide = 2 * scale, nf = part.nf;
+    int limit[3] = {0, 0, 0};
+    for (int i = 0; i < nf; ++i)  // cells c with cellSide c < dims[a]
+      limit[i] = (dims[static_cast<std::size_t>(part.axis[i])] + cellSide - 1) / cellSide;
+    auto leaf = [&](std::uint64_t m, const int* c) {
+      GridPoint base{side, side, side};
+      for (int i = 0; i < nf; ++i) base[static_cast<std::size_t>(part.axis[i])] = cellSide * c[i];
+      for (std::uint64_t o = 0; o < orientations; ++o) {
+        const std::uint64_t h = blk.begin + m * orientations + o;
+        if (h < begin) continue;
+        if (h >= end) return;
+        const unsigned odd = blk.orientations[o];
+        GridPoint p = base;
+        for (int a = 0; a < 3; ++a) p[a] += ((odd >> a) & 1u) ? scale : 0;
+        if (inside(p)) f(h, p, part.level, lv.scaleLog2, odd);
       }
-      if (boundaryOutside) continue;
-      const std::uint64_t mlo = begin > blk.begin ? (begin - blk.begin) / orientations : 0;
-      const std::uint64_t mhi = std::min(blk.cells, (end - blk.begin + orientations - 1) / orientations);
-      auto leaf = [&](std::uint64_t m, const int* c) {
-        GridPoint base{side, side, side};
-        for (int i = 0; i < nf; ++i) base[axis[i]] = cellSide * c[i];
-        for (std::uint64_t o = 0; o < orientations; ++o) {
-          const std::uint64_t h = blk.begin + m * orientations + o;
-          if (h < begin) continue;
-          if (h >= end) return;
-          const unsigned odd = blk.orientations[o];
-          GridPoint p = base;
-          for (int a = 0; a < 3; ++a) p[a] += ((odd >> a) & 1u) ? scale : 0;
-          if (inside(p)) f(h, p, level, lv.scaleLog2, odd);
-        }
-      };
-      const int origin[3] = {0, 0, 0};
-      hz_detail::mortonDescend(nf, limit, nf == 0 ? 0 : lv.cellBits, 0, origin, mlo, mhi, leaf);
-    }
-  }
+    };
+    const int origin[3] = {0, 0, 0};
+    hz_detail::mortonDescend(nf, limit, nf == 0 ? 0 : lv.cellBits, 0, origin, part.mlo, part.mhi, leaf);
+    return true;
+  });
 }
 
 inline void HzCursor::computeCell() {
