@@ -267,6 +267,9 @@ RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int th
   return r;
 }
 
+// Issue 18, goal 3: ten times the whole-volume decode measured before it, on 2 threads.
+constexpr double kWholeDecodeGoalMBps = 330.0;
+
 BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& sets) {
   BenchTable t;
   t.id = "leb.decode_speed";
@@ -301,6 +304,11 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   const Timing w2 = measure([&] { (void)ref::decodeLeb(*e.stream, 2); });
   t.rows.push_back({"whole volume (decompress and reconstruct), MB/s of data and gradients",
                     mbps(volumeBytes, w1.median), mbps(volumeBytes, w2.median), ""});
+  // The whole decode decompresses every page and then reconstructs: page decompression alone (the
+  // first row, the same bytes for 8-bit data) bounds it from above.
+  t.rows.push_back({"whole volume / goal of 330 MB/s (it cannot exceed page decompression alone, row 1)",
+                    formatNumber("%.2f", volumeBytes / 1e6 / w1.median / kWholeDecodeGoalMBps),
+                    formatNumber("%.2f", volumeBytes / 1e6 / w2.median / kWholeDecodeGoalMBps), ""});
   const int points = o.quick ? 5000 : 1000000;
   for (const AccessPattern pattern : {AccessPattern::Bricks, AccessPattern::Uniform})
     for (std::size_t budget : {std::size_t{64} << 20, std::size_t{1} << 20}) {
@@ -309,10 +317,12 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
       const bool bricks = pattern == AccessPattern::Bricks;
       const std::string what = std::string(bricks ? "points of random 8^3 bricks" : "uniformly random points") +
                                " (sample and gradient), points/s, cache " + std::to_string(budget >> 20) + " MB";
+      const bool goalRow = bricks && budget > (1u << 20);
       t.rows.push_back({what,
                         formatNumber("%.0f", r1.pointsPerSecond) +
                             formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
-                        formatNumber("%.0f", r2.pointsPerSecond),
+                        formatNumber("%.0f", r2.pointsPerSecond) +
+                            (goalRow ? formatNumber(" (%.2f of the goal, 3.3 M)", r2.pointsPerSecond / 3.3e6) : ""),
                         bricks && budget > (1u << 20) ? "362K-3.32M points/s (during extraction)" : ""});
       t.data["random_access"].push_back({{"pattern", bricks ? "bricks" : "uniform"},
                                          {"budget_bytes", budget},

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <stdexcept>
+#include <unordered_set>
 
 #include "conformance/io/raw_volume.h"
 #include "reference/common/fields.h"
@@ -86,6 +88,21 @@ std::string dataBytes(const ref::Volume<std::uint16_t>& v, int bits) {
 std::string gradientBytes(const ref::Volume<std::uint16_t>& v) {
   const std::vector<std::int8_t> g = ref::quantizedGradients(v);
   return std::string(reinterpret_cast<const char*>(g.data()), g.size());
+}
+
+double repeatedRowShare(std::string_view bytes, std::size_t rowBytes) {
+  if (rowBytes == 0 || bytes.size() % rowBytes != 0)
+    throw std::invalid_argument("repeatedRowShare: rows of " + std::to_string(rowBytes) + " bytes do not divide " +
+                                std::to_string(bytes.size()) + " bytes");
+  std::unordered_set<std::string_view> seen;
+  std::size_t rows = 0, repeats = 0;
+  for (std::size_t at = 0; at < bytes.size(); at += rowBytes) {
+    const std::string_view row = bytes.substr(at, rowBytes);
+    if (row.find_first_not_of(row.front()) == std::string_view::npos) continue;  // one byte repeated
+    ++rows;
+    if (!seen.insert(row).second) ++repeats;
+  }
+  return rows == 0 ? 0.0 : static_cast<double>(repeats) / static_cast<double>(rows);
 }
 
 std::vector<LebDataset> folderLebDatasets(const BenchOptions& o) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "conformance/bench/bench.h"
@@ -36,5 +37,12 @@ const LebDataset* firstAvailable(const std::vector<LebDataset>& sets);
 std::string dataBytes(const ref::Volume<std::uint16_t>& v, int bits);
 // quantizedGradients(v) as bytes, 3 per sample.
 std::string gradientBytes(const ref::Volume<std::uint16_t>& v);
+
+// Of the rows of `bytes` (consecutive runs of rowBytes bytes; an x-row of a channel) that are not
+// one byte repeated, the share that repeat an earlier row byte for byte: exact repeats at a
+// distance, which an LZ coder (zstd, xz) copies and a predictor from neighbouring samples cannot
+// see (a volume with mirror symmetry repeats most of its rows). 0 when no row qualifies. Throws
+// std::invalid_argument when rowBytes is 0 or does not divide the size.
+double repeatedRowShare(std::string_view bytes, std::size_t rowBytes);
 
 }  // namespace voxref::conf
