@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "conformance/cli/commands.h"
+#include "conformance/cli/memory_policy.h"
 
 namespace voxref::cli {
 
@@ -37,6 +38,7 @@ std::string joinArgs(int argc, char** argv) {
 
 int main(int argc, char** argv) {
   using namespace voxref::cli;
+  keepFreedMemoryForReuse();
   CLI::App app{"voxref: validation suite for compressed volume rendering on GPUs"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "voxref 0.1.0");

@@ -1,14 +1,15 @@
 // A hash map from 64-bit keys to small values, in one flat array (open addressing, linear
 // probing): the memo and vertex maps of the isosurface path, which do millions of lookups and
-// insertions a frame and never erase one key (they are emptied whole). std::unordered_map
-// allocates a node per entry, and that allocation was the largest single cost of extraction.
+// insertions a frame. std::unordered_map allocates a node per entry, and that allocation was the
+// largest single cost of extraction.
 //
 // Contract: any key except kEmptyKey (all ones; try_emplace throws std::invalid_argument for it);
-// find and try_emplace are amortized O(1); the table doubles when it is half full, so it holds at
+// find, try_emplace and erase are amortized O(1); the table doubles when it is half full, so it holds at
 // most 4 slots per entry (16 + 4 sizeof(V) bytes per entry at worst, plus the empty table's 16
 // slots), and 6 while it doubles (the old table and the new one); a table reserved for n entries
-// never doubles before it holds n. References returned by find and try_emplace are valid until the next try_emplace or
-// clear. Iteration is not offered: results cannot depend on the table's order. Not thread-safe.
+// never doubles before it holds n; erase never shrinks it. References returned by find and
+// try_emplace are valid until the next try_emplace, erase or clear. Iteration is not offered: results cannot depend on
+// the table's order. Not thread-safe.
 #pragma once
 
 #include <algorithm>
@@ -52,6 +53,30 @@ class FlatU64Map {
     values_[i] = value;
     ++size_;
     return {values_[i], true};
+  }
+
+  // Removes `key` and its value; returns whether it was there. Backward-shift deletion (Knuth,
+  // TAOCP vol. 3, section 6.4, Algorithm R): the entries after it in its probe run move up into
+  // the hole unless their home slot lies cyclically after it, so no tombstones are left and every
+  // remaining key is still found from its home slot.
+  bool erase(std::uint64_t key) {
+    if (key == kEmptyKey) return false;
+    std::size_t hole = slotOf(key);
+    for (; keys_[hole] != key; hole = (hole + 1) & mask_)
+      if (keys_[hole] == kEmptyKey) return false;
+    for (std::size_t j = (hole + 1) & mask_; keys_[j] != kEmptyKey; j = (j + 1) & mask_) {
+      const std::size_t home = slotOf(keys_[j]);
+      // The entry at j stays when its home lies cyclically in (hole, j].
+      const bool stays = hole <= j ? (hole < home && home <= j) : (hole < home || home <= j);
+      if (stays) continue;
+      keys_[hole] = keys_[j];
+      values_[hole] = std::move(values_[j]);
+      hole = j;
+    }
+    keys_[hole] = kEmptyKey;
+    values_[hole] = V{};
+    --size_;
+    return true;
   }
 
   // Sizes the table for n entries at once (at most 4n slots, 16 at least); only on an empty map.

@@ -52,8 +52,13 @@ CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream
 }
 
 FieldSample CompressedGridField::at(const GridPoint& p) {
+  if (!grid_.contains(p)) reader_.sampleAndGradient(p);  // throws, naming the point
+  const auto key = static_cast<std::uint32_t>(grid_.linearIndex(p));
+  Recent& r = recent_[key & (kRecentPoints - 1)];
+  if (r.key == key) return r.sample;
   const LebReader::SampleAndGradient both = reader_.sampleAndGradient(p);
-  return FieldSample{both.sample, both.gradient};
+  r = {key, FieldSample{both.sample, both.gradient}};
+  return r.sample;
 }
 
 }  // namespace voxref::ref

@@ -4,29 +4,6 @@
 #include <string>
 
 namespace voxref::ref {
-namespace {
-
-long long length2(const GridPoint& a, const GridPoint& b) {
-  long long s = 0;
-  for (int i = 0; i < 3; ++i) s += static_cast<long long>(a[i] - b[i]) * (a[i] - b[i]);
-  return s;
-}
-
-// Index pair of the longest edge (unique in an LEB tetrahedron: its edges have the lengths of a
-// Kuhn simplex, scaled).
-std::pair<int, int> longestEdge(const Tetrahedron& t) {
-  std::pair<int, int> e{0, 1};
-  long long best = -1;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (const long long l = length2(t.v[i], t.v[j]); l > best) {
-        best = l;
-        e = {i, j};
-      }
-  return e;
-}
-
-}  // namespace
 
 std::array<Tetrahedron, 6> rootTetrahedra(const LebGrid& g) {
   const int n = g.side();
@@ -95,11 +72,30 @@ void DiamondMesh::merge(const GridPoint& d) {
 }
 
 std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m) {
-  const auto [i, j] = longestEdge(t);
+  return bisectTetrahedron(t, longestEdge(t), m);
+}
+
+std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, std::pair<int, int> edge, const GridPoint& m) {
+  const auto [i, j] = edge;
   Tetrahedron a = t, b = t;
   a.v[static_cast<std::size_t>(j)] = m;  // keeps v[i]
   b.v[static_cast<std::size_t>(i)] = m;  // keeps v[j]
   return {a, b};
+}
+
+LeafVisit DiamondMesh::leafOnPath(std::uint64_t path) const {
+  const std::uint64_t root = path >> 61, depth = path & kLeafPathDepthMask;
+  if (root > 5 || depth > static_cast<std::uint64_t>(grid_.levelCount()) ||
+      (path & ~kLeafPathDepthMask & ((std::uint64_t{1} << (61 - depth)) - 1)) != 0)
+    throw std::invalid_argument("leafOnPath: " + std::to_string(path) + " is not the path of a tetrahedron");
+  const int r = 5 - static_cast<int>(root);
+  LeafVisit v = visitOf(rootTetrahedra(grid_)[static_cast<std::size_t>(r)], {-1, -1, -1}, rootLeafPath(r));
+  for (std::uint64_t d = 1; d <= depth && v.hasSplitVertex && isSplit(v.splitVertex); ++d) {
+    const int half = (path >> (61 - d)) & 1 ? 0 : 1;
+    const Tetrahedron t = bisectTetrahedron(v.t, longestEdge(v.t), v.splitVertex)[static_cast<std::size_t>(half)];
+    v = visitOf(t, v.splitVertex, halfLeafPath(v.path, half));
+  }
+  return v;
 }
 
 std::vector<Tetrahedron> DiamondMesh::leafTetrahedra() const {

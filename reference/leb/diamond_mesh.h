@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "reference/leb/leb_grid.h"
@@ -18,6 +19,19 @@ namespace voxref::ref {
 
 struct Tetrahedron {
   std::array<GridPoint, 4> v;
+};
+
+// A tetrahedron of the hierarchy as the traversal meets it: its path (below), the split vertex of
+// the tetrahedron it is a half of (its creator; {-1, -1, -1} for a root), and its own split
+// vertex, the midpoint of its longest edge, when that is a grid point.
+struct LeafVisit {
+  Tetrahedron t;
+  GridPoint creator{-1, -1, -1};
+  std::uint64_t path = 0;
+  bool hasSplitVertex = false;
+  GridPoint splitVertex{-1, -1, -1};
+  // The diamond a leaf belongs to (DiamondMesh::forEachLeaf).
+  const GridPoint& diamond() const { return hasSplitVertex ? splitVertex : creator; }
 };
 
 // The six tetrahedra of the root cube around its major diagonal (0,0,0)-(N,N,N).
@@ -53,7 +67,21 @@ class DiamondMesh {
   // vertex) the diamond whose split created it; {-1, -1, -1} only for the root tetrahedra of a
   // grid with k = 0. The order is deterministic (that of leafTetrahedra).
   template <class Fn>
-  void forEachLeaf(Fn&& fn) const;
+  void forEachLeaf(Fn&& fn) const {
+    forEachLeafVisit([&](const LeafVisit& v) { fn(v.t, v.diamond()); });
+  }
+  // The same visit with all the traversal knows of a leaf (LeafVisit), its path among it: paths
+  // rise in the visiting order, and a path names one tetrahedron of the hierarchy, the same in
+  // every mesh that has it.
+  template <class Fn>
+  void forEachLeafVisit(Fn&& fn) const;
+  // The leaves at or below `start`, a tetrahedron of the hierarchy whose parents are split (a
+  // leaf of an earlier mesh that is still in this one), in the visiting order: fn(const LeafVisit&).
+  template <class Fn>
+  void forEachLeafBelow(const LeafVisit& start, Fn&& fn) const;
+  // The leaf on `path` (a path of some tetrahedron of this grid): the first tetrahedron along the
+  // path from its root that is not split. Throws std::invalid_argument for a path that is not one.
+  LeafVisit leafOnPath(std::uint64_t path) const;
 
  private:
   LebGrid grid_;
@@ -62,29 +90,78 @@ class DiamondMesh {
   void setSplit(const GridPoint& d, bool split);
 };
 
+// The vertex slots (i < j) of t's longest edge (unique in an LEB tetrahedron: its edges have the
+// lengths of a Kuhn simplex, scaled).
+inline std::pair<int, int> longestEdge(const Tetrahedron& t) {
+  std::pair<int, int> e{0, 1};
+  long long best = -1;
+  for (int i = 0; i < 4; ++i)
+    for (int j = i + 1; j < 4; ++j) {
+      long long l = 0;
+      for (int a = 0; a < 3; ++a) {
+        const long long d = t.v[static_cast<std::size_t>(i)][a] - t.v[static_cast<std::size_t>(j)][a];
+        l += d * d;
+      }
+      if (l > best) {
+        best = l;
+        e = {i, j};
+      }
+    }
+  return e;
+}
 // The two halves of t cut at the midpoint m of its longest edge (first keeps the edge's first
 // endpoint).
 std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m);
+std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, std::pair<int, int> edge, const GridPoint& m);
+
+// A tetrahedron's path: which root tetrahedron, then which half at every bisection below it, and
+// how many bisections (its depth, in bits 7..0). The traversal takes the roots from a stack (the
+// last root first) and, below a split tetrahedron, its second half before its first; so the
+// root's rank 5 - root sits in bits 63..61, and the half taken at depth d (1 for the root's
+// halves) sets bit 61 - d when it is the first half. A grid has at most 3k <= 30 bisections below
+// a root (bits 60..31), so paths of leaves, which are never each other's prefixes, compare as the
+// traversal meets them; the depth tells a tetrahedron from its second half's descendants.
+inline constexpr std::uint64_t kLeafPathDepthMask = 0xff;
+inline std::uint64_t rootLeafPath(int root) { return static_cast<std::uint64_t>(5 - root) << 61; }
+inline std::uint64_t halfLeafPath(std::uint64_t parent, int half) {
+  const std::uint64_t depth = (parent & kLeafPathDepthMask) + 1;
+  return ((parent & ~kLeafPathDepthMask) | (half == 0 ? std::uint64_t{1} << (61 - depth) : 0)) | depth;
+}
+
+// The visit of t: its split vertex, when the midpoint of its longest edge is a grid point.
+inline LeafVisit visitOf(const Tetrahedron& t, const GridPoint& creator, std::uint64_t path) {
+  LeafVisit v{t, creator, path, false, {-1, -1, -1}};
+  const std::pair<int, int> e = longestEdge(t);
+  const GridPoint &a = t.v[static_cast<std::size_t>(e.first)], &b = t.v[static_cast<std::size_t>(e.second)];
+  v.hasSplitVertex = (a[0] + b[0]) % 2 == 0 && (a[1] + b[1]) % 2 == 0 && (a[2] + b[2]) % 2 == 0;
+  if (v.hasSplitVertex) v.splitVertex = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+  return v;
+}
 
 template <class Fn>
-void DiamondMesh::forEachLeaf(Fn&& fn) const {
-  struct Item {
-    Tetrahedron t;
-    GridPoint creator;
-  };
-  std::vector<Item> stack;
-  for (const Tetrahedron& t : rootTetrahedra(grid_)) stack.push_back({t, {-1, -1, -1}});
-  while (!stack.empty()) {
-    const Item item = stack.back();
-    stack.pop_back();
-    GridPoint m;
-    const bool hasSplitVertex = tetrahedronSplitVertex(item.t, m);
-    if (!hasSplitVertex || !isSplit(m)) {
-      fn(item.t, hasSplitVertex ? m : item.creator);
+void DiamondMesh::forEachLeafBelow(const LeafVisit& start, Fn&& fn) const {
+  // Depth first: a split tetrahedron leaves its first half on the stack, so the stack holds at most
+  // one tetrahedron per depth below start, plus one (3k + 1 <= 31).
+  std::array<LeafVisit, 3 * kMaxLebK + 2> stack;
+  std::size_t size = 0;
+  stack[size++] = start;
+  while (size > 0) {
+    const LeafVisit item = stack[--size];
+    if (!item.hasSplitVertex || !isSplit(item.splitVertex)) {
+      fn(item);
       continue;
     }
-    for (const Tetrahedron& half : bisectTetrahedron(item.t, m)) stack.push_back({half, m});
+    const std::array<Tetrahedron, 2> halves = bisectTetrahedron(item.t, longestEdge(item.t), item.splitVertex);
+    for (int h = 0; h < 2; ++h)
+      stack[size++] = visitOf(halves[static_cast<std::size_t>(h)], item.splitVertex, halfLeafPath(item.path, h));
   }
+}
+
+template <class Fn>
+void DiamondMesh::forEachLeafVisit(Fn&& fn) const {
+  const std::array<Tetrahedron, 6> roots = rootTetrahedra(grid_);
+  for (int r = 5; r >= 0; --r)  // the last root first: rootLeafPath's order
+    forEachLeafBelow(visitOf(roots[static_cast<std::size_t>(r)], {-1, -1, -1}, rootLeafPath(r)), fn);
 }
 
 }  // namespace voxref::ref

@@ -11,6 +11,7 @@
 #include "reference/iso/diamond_bounds.h"
 #include "reference/iso/extraction.h"
 #include "reference/iso/grid_field.h"
+#include "reference/iso/incremental_extraction.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_codec.h"
@@ -55,6 +56,9 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
 
   double iso = scene.isovalue;
   ref::ViewRefinement refinement(bounds, iso);
+  // Each frame reads only the leaf tetrahedra that were not leaves the frame before; the same mesh,
+  // bit for bit, as extractIsosurface (incremental_extraction.h).
+  ref::IncrementalExtraction extraction(grid, dims, &bounds, iso);
   std::unordered_map<std::uint64_t, int> visibleAt;  // diamond (linear index) -> frame it was found visible
   ref::IsoMesh previous;
   bool occludersValid = false;
@@ -65,6 +69,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
     if (f == scene.isovalueChangeFrame) {
       iso += scene.isovalueStep;
       refinement.setIsovalue(iso);
+      extraction.setIsovalue(iso);
       visibleAt.clear();
       occludersValid = false;  // the previous surface is not this isovalue's
     }
@@ -89,7 +94,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
       fr.secondsRefine += secondsSince(t);
       t = Clock::now();
       ref::ExtractionStats es;
-      fr.mesh = ref::extractIsosurface(refinement.mesh(), field, &bounds, iso, &es);
+      fr.mesh = extraction.update(refinement.mesh(), field, &es);
       fr.secondsExtract += secondsSince(t);
       fr.triangles = es.triangles;
       fr.leafTetrahedra = es.leafTetrahedra;

@@ -6,7 +6,9 @@
 //      found visible is tested again only after `retestVisibleEvery` frames; a change of isovalue
 //      invalidates the occluders (no culling that frame);
 //   2. view-dependent refinement, occluded diamonds counting as error zero;
-//   3. extraction from the compressed stream (pages decoded on demand);
+//   3. extraction from the compressed stream (pages decoded on demand), incremental: only the
+//      leaf tetrahedra that were not leaves the frame before are read (reference/iso/
+//      incremental_extraction.h; the same mesh as extracting the whole mesh again);
 //   4. the GL image of the mesh, and Embree's image of the same mesh (fixtures/), whose item
 //      buffer says which diamonds are visible: the ground truth the culling is judged by.
 // Query boxes are the diamonds' boxes clipped to the volume and grown by kQueryBoxMargin grid

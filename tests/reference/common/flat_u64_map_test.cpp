@@ -42,6 +42,39 @@ TEST(FlatU64Map, AgreesWithStdUnorderedMapOverRandomInsertionsAndLookups) {
   }
 }
 
+// Erasing as well: keys drawn from a small range so that probe runs are long and wrap around the
+// table's end, where backward-shift deletion has to decide cyclically which entries move.
+TEST(FlatU64Map, AgreesWithStdUnorderedMapOverRandomInsertionsErasuresAndLookups) {
+  std::mt19937_64 rng(11);
+  FlatU64Map<std::uint32_t> flat;
+  std::unordered_map<std::uint64_t, std::uint32_t> oracle;
+  for (int i = 0; i < 400000; ++i) {
+    const std::uint64_t key = (i % 5 == 0) ? rng() >> 1 : rng() % 3000;
+    if (rng() % 3 == 0) {
+      ASSERT_EQ(flat.erase(key), oracle.erase(key) == 1) << "key " << key;
+    } else {
+      const auto [v, inserted] = flat.try_emplace(key, static_cast<std::uint32_t>(i));
+      const auto [it, oracleInserted] = oracle.try_emplace(key, static_cast<std::uint32_t>(i));
+      ASSERT_EQ(inserted, oracleInserted) << "key " << key;
+      ASSERT_EQ(v, it->second) << "key " << key;
+    }
+    ASSERT_EQ(flat.size(), oracle.size());
+    const std::uint64_t probe = rng() % 3000;
+    const std::uint32_t* found = flat.find(probe);
+    const auto o = oracle.find(probe);
+    ASSERT_EQ(found != nullptr, o != oracle.end()) << "probe " << probe;
+    if (found != nullptr) {
+      ASSERT_EQ(*found, o->second);
+    }
+  }
+  for (const auto& [key, value] : oracle) {  // every survivor is still found from its home slot
+    const std::uint32_t* found = flat.find(key);
+    ASSERT_NE(found, nullptr) << "key " << key;
+    ASSERT_EQ(*found, value);
+  }
+  EXPECT_FALSE(flat.erase(FlatU64Map<std::uint32_t>::kEmptyKey));
+}
+
 TEST(FlatU64Map, KeepsTheFirstValueOfAKeyAndRefusesTheReservedKey) {
   FlatU64Map<std::uint32_t> m;
   EXPECT_TRUE(m.try_emplace(0, 5).second);

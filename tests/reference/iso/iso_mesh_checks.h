@@ -12,12 +12,7 @@
 namespace voxref::ref::test_support {
 
 // The same mesh bit for bit: indices, diamonds of the triangles, positions and normals.
-inline bool sameMesh(const IsoMesh& a, const IsoMesh& b) {
-  return a.indices == b.indices && a.triangleDiamond == b.triangleDiamond && a.positions.size() == b.positions.size() &&
-         a.normals.size() == b.normals.size() &&
-         std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0 &&
-         std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)) == 0;
-}
+inline bool sameMesh(const IsoMesh& a, const IsoMesh& b) { return identicalMeshes(a, b); }
 
 // Directed edges without their reverse: 0 for a closed, consistently oriented surface.
 inline std::size_t unmatchedDirectedEdges(const IsoMesh& m) {

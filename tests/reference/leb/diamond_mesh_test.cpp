@@ -37,6 +37,55 @@ TEST(DiamondMesh, RandomSplitAndMergeSequencesStayConforming) {
   }
 }
 
+// Paths name tetrahedra: over many meshes of one grid, a path always comes with the same corners
+// (in the same order), its creator and split vertex are what bisection gives, the leaves of a mesh
+// come in rising path order, and leafOnPath finds each leaf again from its path alone (and the leaf
+// above a path that goes deeper than the mesh).
+TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
+  const LebGrid g = makeLebGrid(3);
+  std::mt19937 rng(1999);
+  std::uniform_int_distribution<int> coord(0, g.side());
+  std::map<std::uint64_t, Tetrahedron> named;
+  DiamondMesh mesh(g);
+  for (int step = 0; step < 300; ++step) {
+    const GridPoint p{coord(rng), coord(rng), coord(rng)};
+    if (isRootCorner(g, p)) continue;
+    if (rng() % 3 == 0) {
+      if (mesh.canMerge(p)) mesh.merge(p);
+    } else {
+      mesh.split(p);
+    }
+    std::uint64_t previous = 0;
+    std::size_t count = 0;
+    mesh.forEachLeafVisit([&](const LeafVisit& v) {
+      if (count++ > 0) EXPECT_LT(previous, v.path);
+      previous = v.path;
+      const auto [it, added] = named.try_emplace(v.path, v.t);
+      EXPECT_EQ(it->second.v, v.t.v) << "path " << v.path << " named two tetrahedra";
+      GridPoint m;
+      EXPECT_EQ(tetrahedronSplitVertex(v.t, m), v.hasSplitVertex);
+      if (v.hasSplitVertex) {
+        EXPECT_EQ(m, v.splitVertex);
+        EXPECT_FALSE(mesh.isSplit(m));
+      }
+      if (v.creator[0] >= 0) EXPECT_TRUE(mesh.isSplit(v.creator));
+      const LeafVisit again = mesh.leafOnPath(v.path);
+      EXPECT_EQ(again.path, v.path);
+      EXPECT_EQ(again.t.v, v.t.v);
+      EXPECT_EQ(again.creator, v.creator);
+      // A path two halves further down the second half's side leads back to this leaf.
+      const std::uint64_t deeper = halfLeafPath(halfLeafPath(v.path, 1), 1);
+      if ((deeper & kLeafPathDepthMask) <= static_cast<std::uint64_t>(g.levelCount()))
+        EXPECT_EQ(mesh.leafOnPath(deeper).path, v.path);
+    });
+    EXPECT_EQ(count, mesh.leafTetrahedra().size());
+    if (::testing::Test::HasFailure()) return;
+  }
+  EXPECT_GT(named.size(), 500u);
+  EXPECT_THROW(mesh.leafOnPath(std::uint64_t{7} << 61), std::invalid_argument);  // no seventh root
+  EXPECT_THROW(mesh.leafOnPath(rootLeafPath(0) | 40), std::invalid_argument);    // deeper than the grid
+}
+
 TEST(DiamondMesh, FullRefinementHasSixTetrahedraPerCell) {
   const LebGrid g = makeLebGrid(2);
   DiamondMesh mesh(g);

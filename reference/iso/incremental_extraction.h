@@ -1,0 +1,133 @@
+// Isosurface extraction that keeps what it made from one frame to the next (Gregorski et al.
+// 2004, section 4: refinement splits and merges a bounded number of diamonds a frame, so most leaf
+// tetrahedra, and the triangles in them, are those of the frame before).
+//
+// A leaf tetrahedron is named by its path in the hierarchy (DiamondMesh::forEachLeafVisit),
+// and a path names one tetrahedron, with the same corners in the same order, in every mesh that
+// has it. So a leaf's triangles depend only on its path, the field and the isovalue. The
+// extraction keeps the last update's leaves in path order, each with its triangles (or its having
+// none); an update walks that list once, and for each old leaf asks the mesh two questions (is
+// the tetrahedron it is a half of still split, is it split itself):
+//   - both no: the same leaf, kept as it is, without reading the field;
+//   - it is split now: the leaves below it are new (DiamondMesh::forEachLeafBelow);
+//   - its parent was merged: the leaf above it on its path is new (DiamondMesh::leafOnPath), and
+//     the old leaves below that one are gone.
+// A new leaf is read and marched as extractIsosurface does. The vertices live in a persistent store
+// (crossing vertices keyed as the builder keys them, clipped ones by their edge), counted by the
+// triangles that use them, and each update assembles the mesh from the kept triangles in path
+// order, which is extractIsosurface's order, with the builder's own code (marching_tetrahedra.h:
+// marchTetrahedron, assembleIsoMesh).
+//
+// Exactness: update(mesh, field) returns what extractIsosurface(mesh, field, bounds, isovalue,
+// stats) returns, bit for bit (positions, normals, indices, diamonds and statistics), provided the
+// field is the same at every update (tests/reference/iso/incremental_extraction_test.cpp checks it
+// after every step of random and view-driven split and merge sequences, with clipping and values
+// equal to the isovalue). Single-threaded and deterministic.
+//
+// Cost of an update: two bit lookups per old leaf, the reads and marching of the new leaves, and
+// one pass over the kept triangles; the first update (and the first after a new isovalue) walks
+// the mesh from its roots. Memory: 48 bytes per leaf, twice (the list being built beside the
+// last), 40 per crossing leaf, and about 100 per vertex of the store with its hash table slots.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "reference/common/flat_u64_map.h"
+#include "reference/common/volume.h"
+#include "reference/iso/diamond_bounds.h"
+#include "reference/iso/extraction.h"
+#include "reference/iso/grid_field.h"
+#include "reference/iso/iso_mesh.h"
+#include "reference/iso/marching_tetrahedra.h"
+#include "reference/leb/diamond_mesh.h"
+#include "reference/leb/hz_order.h"
+
+namespace voxref::ref {
+
+class IncrementalExtraction {
+ public:
+  // For the meshes of `grid` and a field whose volume has `volumeDims` (the clip box, as
+  // extractIsosurface clips). bounds may be null (every leaf is read); they must outlive the
+  // extraction. Throws std::invalid_argument when the bounds' grid is not `grid` or the volume
+  // does not fit it.
+  IncrementalExtraction(const LebGrid& grid, const Dims3& volumeDims, const DiamondRanges* bounds, double isovalue);
+
+  // The isosurface of the mesh as it is now: extractIsosurface's result. Throws
+  // std::invalid_argument when the mesh's or the field's grid, or the field's volume, is not the
+  // extraction's.
+  IsoMesh update(const DiamondMesh& mesh, GridField& field, ExtractionStats* stats = nullptr);
+  // A new isovalue: the next update reads every leaf again.
+  void setIsovalue(double isovalue);
+
+  // Leaf tetrahedra whose corners the last update read (the new ones the bounds did not skip).
+  std::size_t lastUpdateReads() const { return lastReads_; }
+
+ private:
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  // A leaf of the last update, in 48 bytes: its corners, path, creator and split vertex (x = -1:
+  // none), whether its corners were read (the bounds held the isovalue) and whether it has
+  // triangles (its entry in emitted_).
+  struct Leaf {
+    std::array<std::array<std::int16_t, 3>, 4> v{};
+    std::uint64_t path = 0;
+    std::array<std::int16_t, 3> creator{-1, -1, -1}, splitVertex{-1, -1, -1};
+    bool read = false, crossing = false;
+  };
+
+  // The triangles of one crossing leaf.
+  struct Emitted {
+    std::uint64_t path = 0;
+    DiamondId diamond = kNoDiamond;
+    std::uint32_t count = 0;             // vertices, 3 per triangle
+    std::array<std::uint32_t, 6> ids{};  // when count <= 6; else in overflow_ under path
+  };
+
+  // The persistent vertex store (marchTetrahedron's store), counted by the triangles that use a
+  // vertex and by the clipped vertices made on its edges.
+  struct VertexStore {
+    struct Meta {
+      std::uint64_t key = 0;
+      std::array<std::uint32_t, 2> ends{kNone, kNone};  // a clipped vertex's edge
+      std::uint32_t refs = 0;
+      std::int8_t clipAxis = -1;  // -1: a crossing vertex
+      bool alive = false;
+    };
+    std::vector<glm::dvec3> positions, normals;
+    std::vector<Meta> meta;
+    std::vector<std::uint32_t> freeIds;
+    FlatU64Map<std::uint32_t> crossingIds;
+    std::array<FlatU64Map<std::uint32_t>, 3> clipIds;
+    std::vector<std::uint32_t> made;  // made while marching the current tetrahedron
+
+    std::uint32_t make(const MeshVertex& v, std::uint64_t key, int axis);
+    void release(std::uint32_t v);
+    void drop(std::uint32_t v);
+  };
+  struct StoreView;  // marchTetrahedron's view of the store
+
+  void release(const Emitted& e);
+  // extractIsosurface's step for a new leaf: appended to nextLeaves_, its triangles (if any) to
+  // nextEmitted_.
+  void add(const LeafVisit& leaf, GridField& field);
+  bool march(const LeafVisit& leaf, GridField& field);
+
+  LebGrid grid_;
+  Dims3 dims_;
+  GridPoint clipHi_;
+  const DiamondRanges* bounds_;
+  double iso_;
+  HzOrder order_;
+  std::vector<Leaf> leaves_, nextLeaves_;       // the last update's leaves, paths rising; a buffer
+  std::vector<Emitted> emitted_, nextEmitted_;  // the crossing leaves' triangles, paths rising
+  std::size_t readLeaves_ = 0;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> overflow_;
+  VertexStore store_;
+  AssemblyScratch scratch_;
+  std::size_t lastReads_ = 0;
+};
+
+}  // namespace voxref::ref
