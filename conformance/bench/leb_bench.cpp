@@ -457,11 +457,13 @@ BenchTable study(const BenchOptions& o, const std::vector<LebDataset>& sets) {
 }  // namespace
 
 std::vector<std::string> lebBenchIds() {
-  return {"leb.table1", "leb.decode_speed", "leb.page_size", kLebCoderBenchId, kLebScaleBenchId, "study.leb"};
+  return {"leb.table1",     "leb.decode_speed",    "leb.page_size", kLebCoderBenchId,
+          kLebScaleBenchId, kLebPaperScaleBenchId, "study.leb"};
 }
 
 std::vector<BenchTable> lebBench(const BenchOptions& o) {
   std::vector<BenchTable> tables;
+  if (o.filter == kLebPaperScaleBenchId) return {lebPaperScaleBench(o)};  // only when named (leb_scale_bench.h)
   bool any = false;
   for (const auto& id : lebBenchIds()) any |= globMatch(o.filter, id);
   if (!any) return tables;

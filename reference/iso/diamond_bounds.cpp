@@ -13,6 +13,7 @@
 namespace voxref::ref {
 
 DiamondBounds computeDiamondBounds(const LebGrid& grid, const std::vector<std::uint16_t>& values, int threads) {
+  requireIndexedGrid(grid, "diamond bounds");
   DiamondBounds b;
   b.grid = grid;
   const std::uint64_t n = grid.pointCount();
@@ -56,7 +57,7 @@ DiamondBounds parseDiamondBounds(std::string_view bytes) {
     ByteReader::fail(0, "magic: expected 'VXLD' (not diamond bounds)");
   r.le<std::uint16_t>("version", kBoundsVersion, kBoundsVersion);
   DiamondBounds b;
-  b.grid = makeLebGrid(r.le<std::uint8_t>("k", 0, kMaxLebK));
+  b.grid = makeLebGrid(r.le<std::uint8_t>("k", 0, kMaxIndexedLebK));
   r.le<std::uint8_t>("reserved", 0, 0);
   const std::uint64_t n = b.grid.pointCount();
   const std::uint64_t expected = kBoundsHeader + 8 * n + 4;

@@ -11,6 +11,7 @@ namespace voxref::ref {
 
 DenseGridField::DenseGridField(const Volume<std::uint16_t>& volume, const std::vector<std::int8_t>& gradients)
     : grid_(lebGridCovering(volume.dims())), dims_(volume.dims()) {
+  requireIndexedGrid(grid_, "the isosurface field");
   if (gradients.size() != 3 * volume.data().size())
     throw std::invalid_argument("gradients: " + std::to_string(gradients.size()) + " components for " +
                                 std::to_string(volume.data().size()) + " samples (3 per sample expected)");

@@ -82,6 +82,7 @@ IncrementalExtraction::IncrementalExtraction(const LebGrid& grid, const Dims3& v
       bounds_(bounds),
       iso_(isovalue),
       order_(grid_) {
+  requireIndexedGrid(grid_, "incremental extraction");
   if (bounds != nullptr && bounds->lebGrid().k != grid_.k)
     throw std::invalid_argument("incremental extraction: the bounds' grid and the mesh's grid differ");
   for (const int extent : volumeDims)
@@ -91,17 +92,20 @@ IncrementalExtraction::IncrementalExtraction(const LebGrid& grid, const Dims3& v
                                   " points per axis");
 }
 
-void IncrementalExtraction::release(const Emitted& e) {
+void IncrementalExtraction::release(const Emitted& e, std::uint64_t path) {
   if (e.count <= e.ids.size()) {
     for (std::uint32_t i = 0; i < e.count; ++i) store_.release(e.ids[i]);
     return;
   }
-  const auto o = overflow_.find(e.path);
+  const auto o = overflow_.find(path);
   for (const std::uint32_t v : o->second) store_.release(v);
   overflow_.erase(o);
 }
 
 namespace {
+
+// The longest edges of a tetrahedron, numbered as Leaf keeps them.
+constexpr std::array<std::pair<int, int>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
 
 std::array<std::int16_t, 3> narrow(const GridPoint& p) {
   return {static_cast<std::int16_t>(p[0]), static_cast<std::int16_t>(p[1]), static_cast<std::int16_t>(p[2])};
@@ -110,19 +114,38 @@ GridPoint widen(const std::array<std::int16_t, 3>& p) { return {p[0], p[1], p[2]
 
 }  // namespace
 
+GridPoint IncrementalExtraction::creatorOf(const Leaf& l) {
+  if ((l.bits & kHasCreator) == 0) return {-1, -1, -1};
+  return widen(l.v[(l.bits >> kCreatorSlotShift) & 3]);
+}
+
+GridPoint IncrementalExtraction::splitVertexOf(const Leaf& l) {
+  const auto [i, j] = kEdges[(l.bits >> kEdgeShift) & 7];
+  const auto &a = l.v[static_cast<std::size_t>(i)], &b = l.v[static_cast<std::size_t>(j)];
+  return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+}
+
 // extractIsosurface's step for one leaf: skipped when its diamond's range excludes the isovalue,
 // else its corners read and, where they cross, its triangles made against the store.
 void IncrementalExtraction::add(const LeafVisit& leaf, GridField& field) {
   Leaf kept;
   for (std::size_t k = 0; k < 4; ++k) kept.v[k] = narrow(leaf.t.v[k]);
-  kept.path = leaf.path;
-  kept.creator = narrow(leaf.creator);
-  if (leaf.hasSplitVertex) kept.splitVertex = narrow(leaf.splitVertex);
+  kept.bits = leaf.path;
+  if (leaf.creator[0] >= 0) {
+    const auto slot = static_cast<std::uint64_t>(std::find(leaf.t.v.begin(), leaf.t.v.end(), leaf.creator) -
+                                                 leaf.t.v.begin());  // a corner of every half
+    kept.bits |= kHasCreator | slot << kCreatorSlotShift;
+  }
+  if (leaf.hasSplitVertex) {
+    const auto e =
+        static_cast<std::uint64_t>(std::find(kEdges.begin(), kEdges.end(), longestEdge(leaf.t)) - kEdges.begin());
+    kept.bits |= kHasSplitVertex | e << kEdgeShift;
+  }
   const GridPoint& diamond = leaf.diamond();
-  const bool hasDiamond = diamond[0] >= 0;
-  kept.read = bounds_ == nullptr || !hasDiamond || bounds_->mayContain(diamond, iso_);
-  if (kept.read) kept.crossing = march(leaf, field);
-  if (kept.read) {
+  const bool read = bounds_ == nullptr || diamond[0] < 0 || bounds_->mayContain(diamond, iso_);
+  if (read) {
+    kept.bits |= kRead;
+    if (march(leaf, field)) kept.bits |= kCrossing;
     ++readLeaves_;
     ++lastReads_;
   }
@@ -156,7 +179,6 @@ bool IncrementalExtraction::march(const LeafVisit& leaf, GridField& field) {
     if (store_.meta[*it].alive && store_.meta[*it].refs == 0) store_.drop(*it);
   if (count == 0) return false;
   Emitted e;
-  e.path = leaf.path;
   const GridPoint& diamond = leaf.diamond();
   e.diamond = diamond[0] >= 0 ? static_cast<DiamondId>(order_.index(diamond)) : kNoDiamond;
   e.count = static_cast<std::uint32_t>(count);
@@ -178,6 +200,53 @@ void IncrementalExtraction::setIsovalue(double isovalue) {
   store_ = VertexStore{};
 }
 
+void IncrementalExtraction::addAll(const DiamondMesh& mesh, GridField& field) {
+  readLeaves_ = 0;
+  mesh.forEachLeafVisit([&](const LeafVisit& v) { add(v, field); });
+}
+
+void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
+  std::size_t e = 0;  // the old leaves' entries in emitted_ follow their order
+  auto forget = [&](const Leaf& old) {
+    if (old.bits & kRead) --readLeaves_;
+    if (old.bits & kCrossing) release(emitted_[e++], pathOf(old));
+  };
+  auto addLeaf = [&](const LeafVisit& v) { add(v, field); };
+  for (std::size_t i = 0; i < leaves_.size();) {
+    const Leaf& old = leaves_[i];
+    const std::uint64_t path = pathOf(old);
+    if ((old.bits & kHasCreator) && !mesh.isSplit(creatorOf(old))) {
+      // Its parent was merged: the leaf above it on its path replaces it and every old leaf below
+      // that one (they follow it in path order).
+      const LeafVisit above = mesh.leafOnPath(path);
+      const std::uint64_t depth = above.path & kLeafPathDepthMask;
+      const std::uint64_t prefix = ~((std::uint64_t{1} << (61 - depth)) - 1);  // clears the flags too
+      for (; i < leaves_.size() && (leaves_[i].bits & prefix) == (above.path & prefix) &&
+             (leaves_[i].bits & kLeafPathDepthMask) > depth;
+           ++i)
+        forget(leaves_[i]);
+      addLeaf(above);
+      continue;
+    }
+    if (old.bits & kHasSplitVertex) {
+      const GridPoint m = splitVertexOf(old);
+      if (mesh.isSplit(m)) {  // split: new leaves below it
+        Tetrahedron t;
+        for (std::size_t k = 0; k < 4; ++k) t.v[k] = widen(old.v[k]);
+        const LeafVisit start{t, creatorOf(old), path, true, m};
+        forget(old);
+        mesh.forEachLeafBelow(start, addLeaf);
+        ++i;
+        continue;
+      }
+    }
+    nextLeaves_.push_back(old);  // the same leaf
+    if (old.bits & kCrossing) nextEmitted_.push_back(emitted_[e++]);
+    ++i;
+  }
+  if (e != emitted_.size()) throw std::logic_error("incremental extraction: kept triangles without their leaf");
+}
+
 IsoMesh IncrementalExtraction::update(const DiamondMesh& mesh, GridField& field, ExtractionStats* stats) {
   if (mesh.grid().k != grid_.k || field.grid().k != grid_.k)
     throw std::invalid_argument("incremental extraction: the mesh's or the field's grid is not the extraction's");
@@ -187,58 +256,27 @@ IsoMesh IncrementalExtraction::update(const DiamondMesh& mesh, GridField& field,
   lastReads_ = 0;
   nextLeaves_.clear();
   nextEmitted_.clear();
-  auto addLeaf = [&](const LeafVisit& v) { add(v, field); };
-  if (leaves_.empty()) {  // the first update: every leaf is new
-    readLeaves_ = 0;
-    mesh.forEachLeafVisit(addLeaf);
+  if (leaves_.empty()) {
+    addAll(mesh, field);
   } else {
-    std::size_t e = 0;  // the old leaves' entries in emitted_ follow their order
-    auto forget = [&](const Leaf& old) {
-      if (old.read) --readLeaves_;
-      if (old.crossing) release(emitted_[e++]);
-    };
-    for (std::size_t i = 0; i < leaves_.size();) {
-      const Leaf& old = leaves_[i];
-      if (old.creator[0] >= 0 && !mesh.isSplit(widen(old.creator))) {
-        // Its parent was merged: the leaf above it on its path replaces it and every old leaf
-        // below that one (they follow it in path order).
-        const LeafVisit above = mesh.leafOnPath(old.path);
-        const std::uint64_t depth = above.path & kLeafPathDepthMask;
-        const std::uint64_t prefix = ~((std::uint64_t{1} << (61 - depth)) - 1);
-        for (; i < leaves_.size() && (leaves_[i].path & prefix) == (above.path & prefix) &&
-               (leaves_[i].path & kLeafPathDepthMask) > depth;
-             ++i)
-          forget(leaves_[i]);
-        addLeaf(above);
-        continue;
-      }
-      if (old.splitVertex[0] >= 0 && mesh.isSplit(widen(old.splitVertex))) {  // split: new leaves below it
-        Tetrahedron t;
-        for (std::size_t k = 0; k < 4; ++k) t.v[k] = widen(old.v[k]);
-        const LeafVisit start{t, widen(old.creator), old.path, true, widen(old.splitVertex)};
-        forget(old);
-        mesh.forEachLeafBelow(start, addLeaf);
-        ++i;
-        continue;
-      }
-      nextLeaves_.push_back(old);  // the same leaf
-      if (old.crossing) nextEmitted_.push_back(emitted_[e++]);
-      ++i;
-    }
+    follow(mesh, field);
   }
   std::swap(leaves_, nextLeaves_);
   std::swap(emitted_, nextEmitted_);
 
   std::vector<std::uint32_t> indices;
   std::vector<DiamondId> diamonds;
+  auto leaf = leaves_.begin();  // the crossing leaves, in the same order as their entries
   for (const Emitted& e : emitted_) {
+    while ((leaf->bits & kCrossing) == 0) ++leaf;
     if (e.count <= e.ids.size()) {
       indices.insert(indices.end(), e.ids.begin(), e.ids.begin() + e.count);
     } else {
-      const std::vector<std::uint32_t>& ids = overflow_.at(e.path);
+      const std::vector<std::uint32_t>& ids = overflow_.at(pathOf(*leaf));
       indices.insert(indices.end(), ids.begin(), ids.end());
     }
     diamonds.insert(diamonds.end(), e.count / 3, e.diamond);
+    ++leaf;
   }
   IsoMesh out = assembleIsoMesh(std::move(indices), std::move(diamonds), store_.positions, store_.normals, &scratch_);
   if (stats != nullptr) *stats = {leaves_.size(), readLeaves_, out.triangleCount()};

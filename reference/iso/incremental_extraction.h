@@ -26,8 +26,8 @@
 //
 // Cost of an update: two bit lookups per old leaf, the reads and marching of the new leaves, and
 // one pass over the kept triangles; the first update (and the first after a new isovalue) walks
-// the mesh from its roots. Memory: 48 bytes per leaf, twice (the list being built beside the
-// last), 40 per crossing leaf, and about 100 per vertex of the store with its hash table slots.
+// the mesh from its roots. Memory: 32 bytes per leaf and per crossing leaf, twice (the lists being
+// built beside the last), and about 100 per vertex of the store with its hash table slots.
 #pragma once
 
 #include <array>
@@ -68,22 +68,29 @@ class IncrementalExtraction {
 
  private:
   static constexpr std::uint32_t kNone = 0xffffffffu;
-  // A leaf of the last update, in 48 bytes: its corners, path, creator and split vertex (x = -1:
-  // none), whether its corners were read (the bounds held the isovalue) and whether it has
-  // triangles (its entry in emitted_).
+  // A leaf of the last update, in 32 bytes (every frame copies the list, and on these machines
+  // every new page of it costs a fault): its corners and its path, whose unused bits 8..16 hold
+  // which corner is its creator (the split vertex of the tetrahedron it is a half of), which edge is
+  // its longest (its split vertex is that edge's midpoint), whether it has either, whether its
+  // corners were read (the bounds held the isovalue) and whether it has triangles (its entry in
+  // emitted_, which follows the leaves' order).
   struct Leaf {
     std::array<std::array<std::int16_t, 3>, 4> v{};
-    std::uint64_t path = 0;
-    std::array<std::int16_t, 3> creator{-1, -1, -1}, splitVertex{-1, -1, -1};
-    bool read = false, crossing = false;
+    std::uint64_t bits = 0;
   };
+  static constexpr int kCreatorSlotShift = 8, kEdgeShift = 11;
+  static constexpr std::uint64_t kHasCreator = std::uint64_t{1} << 10, kHasSplitVertex = std::uint64_t{1} << 14,
+                                 kRead = std::uint64_t{1} << 15, kCrossing = std::uint64_t{1} << 16,
+                                 kLeafFlags = std::uint64_t{0x1ff} << 8;
+  static std::uint64_t pathOf(const Leaf& l) { return l.bits & ~kLeafFlags; }
+  static GridPoint creatorOf(const Leaf& l);
+  static GridPoint splitVertexOf(const Leaf& l);
 
-  // The triangles of one crossing leaf.
+  // The triangles of one crossing leaf, in 32 bytes.
   struct Emitted {
-    std::uint64_t path = 0;
     DiamondId diamond = kNoDiamond;
     std::uint32_t count = 0;             // vertices, 3 per triangle
-    std::array<std::uint32_t, 6> ids{};  // when count <= 6; else in overflow_ under path
+    std::array<std::uint32_t, 6> ids{};  // when count <= 6; else in overflow_ under the leaf's path
   };
 
   // The persistent vertex store (marchTetrahedron's store), counted by the triangles that use a
@@ -109,11 +116,15 @@ class IncrementalExtraction {
   };
   struct StoreView;  // marchTetrahedron's view of the store
 
-  void release(const Emitted& e);
+  void release(const Emitted& e, std::uint64_t path);
   // extractIsosurface's step for a new leaf: appended to nextLeaves_, its triangles (if any) to
   // nextEmitted_.
   void add(const LeafVisit& leaf, GridField& field);
   bool march(const LeafVisit& leaf, GridField& field);
+  // The mesh's leaves from its roots (the first update, or the first after a new isovalue).
+  void addAll(const DiamondMesh& mesh, GridField& field);
+  // The leaves of the last update against the mesh now.
+  void follow(const DiamondMesh& mesh, GridField& field);
 
   LebGrid grid_;
   Dims3 dims_;

@@ -12,6 +12,7 @@ bool isFinest(const GridPoint& p) { return ((p[0] | p[1] | p[2]) & 1) != 0; }
 template <class T>
 CoarseDiamondBounds computeCoarse(const LebGrid& grid, std::span<const T> values, int threads,
                                   const std::function<void(double)>& progress) {
+  requireIndexedGrid(grid, "coarse diamond bounds");
   if (values.size() != grid.pointCount())
     throw std::invalid_argument("coarse diamond bounds: " + std::to_string(values.size()) + " values for a grid of " +
                                 std::to_string(grid.pointCount()) + " points");

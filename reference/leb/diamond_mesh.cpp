@@ -32,7 +32,9 @@ bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex) {
 }
 
 DiamondMesh::DiamondMesh(const LebGrid& grid)
-    : grid_(makeLebGrid(grid.k)), split_(static_cast<std::size_t>((grid_.pointCount() + 63) / 64), 0) {}
+    : grid_(makeLebGrid(grid.k)),
+      split_((requireIndexedGrid(grid_, "the diamond mesh"), static_cast<std::size_t>((grid_.pointCount() + 63) / 64)),
+             0) {}
 
 void DiamondMesh::setSplit(const GridPoint& d, bool split) {
   const std::uint64_t i = grid_.linearIndex(d);

@@ -28,6 +28,14 @@ LebGrid makeLebGrid(int k) {
   return LebGrid{k};
 }
 
+void requireIndexedGrid(const LebGrid& g, const char* what) {
+  if (g.k > kMaxIndexedLebK)
+    throw std::invalid_argument(std::string(what) + " takes grids up to k = " + std::to_string(kMaxIndexedLebK) + " (" +
+                                std::to_string((1 << kMaxIndexedLebK) + 1) +
+                                "^3 points: it names a point by a 32-bit index); this one has k = " +
+                                std::to_string(g.k) + ", " + std::to_string(g.pointsPerAxis()) + "^3 points");
+}
+
 LebGrid lebGridCovering(const std::array<int, 3>& dims) {
   const int largest = std::max({dims[0], dims[1], dims[2]});
   if (std::min({dims[0], dims[1], dims[2]}) < 1) throw std::invalid_argument("volume extents must be at least 1");

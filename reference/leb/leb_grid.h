@@ -34,7 +34,11 @@ namespace voxref::ref {
 
 using GridPoint = std::array<int, 3>;
 
-inline constexpr int kMaxLebK = 10;  // 1025^3 points
+inline constexpr int kMaxLebK = 11;  // 2049^3 points: the codec and its stream (FORMAT.md)
+// Random access and the isosurface system name a grid point by a 32-bit index (LebReader's memo
+// keys, DiamondId, the marching-tetrahedra vertex keys hold linear indices below 2^31): they take
+// grids up to k = 10, 1025^3 points.
+inline constexpr int kMaxIndexedLebK = 10;
 
 struct LebGrid {
   int k = 0;  // N = 2^k cells per axis, N + 1 points per axis
@@ -64,6 +68,8 @@ struct LebGrid {
 
 // Throws std::invalid_argument unless 0 <= k <= kMaxLebK.
 LebGrid makeLebGrid(int k);
+// Throws std::invalid_argument, naming `what`, for a grid past kMaxIndexedLebK.
+void requireIndexedGrid(const LebGrid& g, const char* what);
 // The smallest grid whose (2^k + 1)^3 points cover `dims` (each extent >= 1).
 LebGrid lebGridCovering(const std::array<int, 3>& dims);
 

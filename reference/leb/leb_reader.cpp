@@ -19,8 +19,9 @@ constexpr int kBrickLog2 = 2;
 
 LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheBudgetBytes)
     : stream_(std::move(stream)), order_(stream_->grid), cache_(cacheBudgetBytes) {
-  constexpr std::uint64_t kMaxAxis = (std::uint64_t{1} << kMaxLebK) + 1;
+  constexpr std::uint64_t kMaxAxis = (std::uint64_t{1} << kMaxIndexedLebK) + 1;
   static_assert(kMaxAxis * kMaxAxis * kMaxAxis < ~std::uint32_t{0}, "a grid's linear index fits the memo's key");
+  requireIndexedGrid(stream_->grid, "random access (LebReader)");
   const auto n = static_cast<std::uint64_t>(stream_->grid.pointsPerAxis());
   bricksPerAxis_ = (n + (1u << kBrickLog2) - 1) >> kBrickLog2;
   const std::uint64_t brickedPoints = bricksPerAxis_ * bricksPerAxis_ * bricksPerAxis_ << (3 * kBrickLog2);

@@ -26,7 +26,8 @@
 // (at most 12 MiB).
 // Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
 // page (when it is decoded), std::invalid_argument for a point outside the grid or a channel the
-// stream lacks. Not thread-safe: use one reader per thread (they can share the stream).
+// stream lacks, and from the constructor for a grid past kMaxIndexedLebK (its memo keys are 32-bit
+// linear indices). Not thread-safe: use one reader per thread (they can share the stream).
 #pragma once
 
 #include <array>

@@ -47,10 +47,10 @@ void aimOrbitAt(IsoScene& scene, const ref::Dims3& dims);
 
 // The scene as JSON and back (fixture manifests). fromJson is strict (json_reader.h, as the other
 // scene readers): JsonFieldError naming the field for a missing or unknown key, a value of the wrong type, an integer
-// out of range (dims 1..kMaxIsoSceneExtent, the largest LEB grid; orbit frames
+// out of range (dims 1..kMaxIsoSceneExtent, the largest grid of the isosurface system; orbit frames
 // 1..kMaxIsoSceneFrames; camera width and height 1..kMaxIsoSceneImageSide; refinement budgets
 // >= 0), a data name that is no field, or an orbit camera that is degenerate at some frame.
-inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxLebK) + 1, kMaxIsoSceneFrames = 10000,
+inline constexpr int kMaxIsoSceneExtent = (1 << ref::kMaxIndexedLebK) + 1, kMaxIsoSceneFrames = 10000,
                      kMaxIsoSceneImageSide = 4096;
 nlohmann::json toJson(const IsoScene& scene);
 IsoScene isoSceneFromJson(const nlohmann::json& j);

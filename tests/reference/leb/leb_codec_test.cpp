@@ -358,9 +358,9 @@ TEST_F(LebCorrupt, NotAStreamAndTruncated) {
 
 TEST_F(LebCorrupt, OversizedClaimsAreRefusedBeforeAllocating) {
   std::string b = bytes;
-  b[7] = 11;  // k
+  b[7] = 12;  // k
   fixCrcs(b);
-  EXPECT_EQ(errorOf(b), "offset 7: k: expected 0..10, got 11");
+  EXPECT_EQ(errorOf(b), "offset 7: k: expected 0..11, got 12");
   b = bytes;
   b[7] = 10;  // a 1025^3 grid: its page table would not fit the stream
   put32(b, 8, 1025);
@@ -492,6 +492,25 @@ TEST(LebCodec, ThinVolumesStoreOnlyThePagesOfTheirSamples) {
   EXPECT_EQ(lebStats(s).pages, (1025ull * 1025 * 1025 + 4095) / 4096);
   EXPECT_LT(s.bytes.size(), 16u * 1025);  // 1025 bytes of data; 12 bytes of table per stored page
   EXPECT_EQ(decodeLeb(s).data.data(), v.data());
+}
+
+// The grid of k = 11 (2049^3 points, the paper's 2048x2048x1920 needs it): a thin volume in it
+// round-trips with its gradients, with hierarchical indices past 2^32 (the last sample's), and
+// random access refuses the grid, naming why (its memo keys are 32-bit linear indices).
+TEST(LebCodec, TheGridOfKElevenRoundTripsAndRandomAccessRefusesIt) {
+  const Volume<std::uint16_t> v = smooth({2049, 2, 1}, 8);
+  const LebStream s = parseLebStream(encodeLeb(v, 8));
+  EXPECT_EQ(s.grid.k, 11);
+  EXPECT_GT(HzOrder(s.grid).index({2048, 1, 0}), std::uint64_t{1} << 32);
+  const LebDecoded d = decodeLeb(s);
+  EXPECT_EQ(d.data.data(), v.data());
+  EXPECT_EQ(d.gradients, quantizedGradients(v));
+  try {
+    LebReader reader(std::make_shared<const LebStream>(s), 1u << 20);
+    FAIL() << "a k = 11 stream was accepted for random access";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("takes grids up to k = 10"), std::string::npos) << e.what();
+  }
 }
 
 TEST(LebCorruptClaims, AVolumeLargerThanItsPayloadIsRefused) {

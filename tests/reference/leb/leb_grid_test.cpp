@@ -162,9 +162,13 @@ TEST(LebGrid, CoveringGridsAndLimits) {
   EXPECT_EQ(lebGridCovering({37, 5, 101}).k, 7);
   EXPECT_EQ(lebGridCovering({256, 256, 128}).k, 8);
   EXPECT_EQ(lebGridCovering({129, 129, 129}).k, 7);
-  EXPECT_THROW(lebGridCovering({1026, 1, 1}), std::invalid_argument);
+  EXPECT_EQ(lebGridCovering({1026, 1, 1}).k, 11);
+  EXPECT_EQ(lebGridCovering({2048, 2048, 1920}).k, 11);  // the paper's largest volume
+  EXPECT_THROW(lebGridCovering({2050, 1, 1}), std::invalid_argument);
   EXPECT_THROW(lebGridCovering({0, 1, 1}), std::invalid_argument);
-  EXPECT_THROW(makeLebGrid(11), std::invalid_argument);
+  EXPECT_THROW(makeLebGrid(12), std::invalid_argument);
+  EXPECT_NO_THROW(requireIndexedGrid(makeLebGrid(10), "x"));
+  EXPECT_THROW(requireIndexedGrid(makeLebGrid(11), "x"), std::invalid_argument);
   EXPECT_THROW(splitEdge(makeLebGrid(2), {0, 4, 0}), std::invalid_argument);
   EXPECT_THROW(classifyPoint(makeLebGrid(2), {0, 5, 0}), std::invalid_argument);
 }
