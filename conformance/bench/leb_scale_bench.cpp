@@ -190,7 +190,7 @@ BenchTable lebScaleBench(const BenchOptions& o) {
       "samples from the largest volume measured, peak RSS that volume's plus the larger shell of padding "
       "(96 bytes a point), disk the volume, gradients and stream (encode: input, gradients scratch and stream; "
       "decode: stream, volume and gradients). `voxref bench --filter leb.paper_scale` runs that volume (the grid of "
-      "k = 11, 2049^3) the same way; it runs only when named, for its hour and 70 GB of scratch disk. " +
+      "k = 11, 2049^3) the same way; it runs only when named, for its hours and 70 GB of scratch disk. " +
       std::string(o.quick ? "Quick mode: 128^3 instead of 512^3 and 1024^3." : "");
   return t;
 }
@@ -228,7 +228,8 @@ BenchTable lebPaperScaleBench(const BenchOptions& o) {
       bytesText(static_cast<double>(io::kLebWindowBytes)) +
       "; peak RSS is its VmHWM, mapped file pages included. The decoded samples are compared with the input "
       "bit for bit, and the decoded gradients with the input's gradients made slice by slice. Runs only when "
-      "named (--filter leb.paper_scale): about an hour on 2 cores and " +
+      "named (--filter leb.paper_scale): its encode takes about 35 minutes on 2 cores, and its decode, under the "
+      "window, several hours (docs/leb.md, 'Streaming between files'); it needs " +
       bytesText(needed) + " of scratch disk in the output folder, removed after.";
   return t;
 }

@@ -13,10 +13,11 @@ namespace voxref::conf {
 inline constexpr const char* kLebScaleBenchId = "leb.scale";
 BenchTable lebScaleBench(const BenchOptions& options);
 
-// The paper's largest volume, 2048x2048x1920, run the same way (the grid of k = 11). It takes about
-// an hour and 70 GB of scratch disk, so it runs only when the filter is its id exactly, never as
-// part of a glob; throws std::runtime_error before writing anything when the output folder's file
-// system lacks the disk.
+// The paper's largest volume, 2048x2048x1920, run the same way (the grid of k = 11). Its encode
+// takes about 35 minutes, its decode hours under the resident window (docs/leb.md), and it needs
+// 70 GB of scratch disk, so it runs only when the filter is its id exactly, never as part of a
+// glob; throws std::runtime_error before writing anything when the output folder's file system
+// lacks the disk.
 inline constexpr const char* kLebPaperScaleBenchId = "leb.paper_scale";
 BenchTable lebPaperScaleBench(const BenchOptions& options);
 

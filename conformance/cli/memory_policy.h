@@ -3,8 +3,8 @@
 // again over and over; by default glibc gives every block above its mmap threshold (at most
 // 32 MiB, dynamic) back to the kernel when it is freed, so the next block of that size is fresh
 // memory whose every page faults on first touch. On the virtual machines voxref is measured on a
-// page fault costs several microseconds, and the faults were a seventh of an isosurface frame's
-// time (docs/iso.md, "Figures").
+// page fault costs several microseconds, and the faults were a seventh of the time of the
+// isosurface frames' extraction (docs/iso.md, "Figures").
 #pragma once
 
 namespace voxref::cli {
