@@ -5,10 +5,11 @@
 #pragma once
 
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "reference/common/same_bytes.h"
 
 namespace voxref::ref {
 
@@ -29,10 +30,8 @@ struct IsoMesh {
 // The same mesh bit for bit: indices, the triangles' diamonds, positions and normals (compared as
 // bits, so -0 and +0 differ and a NaN equals itself).
 inline bool identicalMeshes(const IsoMesh& a, const IsoMesh& b) {
-  return a.indices == b.indices && a.triangleDiamond == b.triangleDiamond && a.positions.size() == b.positions.size() &&
-         a.normals.size() == b.normals.size() &&
-         std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(glm::vec3)) == 0 &&
-         std::memcmp(a.normals.data(), b.normals.data(), a.normals.size() * sizeof(glm::vec3)) == 0;
+  return a.indices == b.indices && a.triangleDiamond == b.triangleDiamond && sameBytes(a.positions, b.positions) &&
+         sameBytes(a.normals, b.normals);
 }
 
 }  // namespace voxref::ref

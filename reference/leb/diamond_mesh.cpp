@@ -22,13 +22,9 @@ std::array<Tetrahedron, 6> rootTetrahedra(const LebGrid& g) {
 }
 
 bool tetrahedronSplitVertex(const Tetrahedron& t, GridPoint& splitVertex) {
-  const auto [i, j] = longestEdge(t);
-  for (int a = 0; a < 3; ++a) {
-    const int sum = t.v[static_cast<std::size_t>(i)][a] + t.v[static_cast<std::size_t>(j)][a];
-    if (sum % 2 != 0) return false;
-    splitVertex[a] = sum / 2;
-  }
-  return true;
+  const LeafVisit v = visitOf(t, {-1, -1, -1}, 0);
+  if (v.hasSplitVertex) splitVertex = v.splitVertex;
+  return v.hasSplitVertex;
 }
 
 DiamondMesh::DiamondMesh(const LebGrid& grid)

@@ -118,9 +118,10 @@ std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, std::pair<int
 // how many bisections (its depth, in bits 7..0). The traversal takes the roots from a stack (the
 // last root first) and, below a split tetrahedron, its second half before its first; so the
 // root's rank 5 - root sits in bits 63..61, and the half taken at depth d (1 for the root's
-// halves) sets bit 61 - d when it is the first half. A grid has at most 3k <= 30 bisections below
-// a root (bits 60..31), so paths of leaves, which are never each other's prefixes, compare as the
-// traversal meets them; the depth tells a tetrahedron from its second half's descendants.
+// halves) sets bit 61 - d when it is the first half. A mesh's grid has at most 3k <= 30
+// bisections below a root (k <= kMaxIndexedLebK: bits 60..31), so paths of leaves, which are never
+// each other's prefixes, compare as the traversal meets them; the depth tells a tetrahedron from
+// its second half's descendants.
 inline constexpr std::uint64_t kLeafPathDepthMask = 0xff;
 inline std::uint64_t rootLeafPath(int root) { return static_cast<std::uint64_t>(5 - root) << 61; }
 inline std::uint64_t halfLeafPath(std::uint64_t parent, int half) {
@@ -142,7 +143,7 @@ template <class Fn>
 void DiamondMesh::forEachLeafBelow(const LeafVisit& start, Fn&& fn) const {
   // Depth first: a split tetrahedron leaves its first half on the stack, so the stack holds at most
   // one tetrahedron per depth below start, plus one (3k + 1 <= 31).
-  std::array<LeafVisit, 3 * kMaxLebK + 2> stack;
+  std::array<LeafVisit, 3 * kMaxIndexedLebK + 2> stack;
   std::size_t size = 0;
   stack[size++] = start;
   while (size > 0) {
