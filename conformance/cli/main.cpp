@@ -7,6 +7,7 @@
 
 #include "conformance/cli/commands.h"
 #include "conformance/cli/memory_policy.h"
+#include "conformance/io/temporary_files.h"
 
 namespace voxref::cli {
 
@@ -39,6 +40,7 @@ std::string joinArgs(int argc, char** argv) {
 int main(int argc, char** argv) {
   using namespace voxref::cli;
   keepFreedMemoryForReuse();
+  voxref::io::removeTemporariesOnSignals();
   CLI::App app{"voxref: validation suite for compressed volume rendering on GPUs"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "voxref 0.1.0");

@@ -96,6 +96,7 @@ AtomicOutput::AtomicOutput(std::filesystem::path destination)
   } else {
     temporary_ = destination_.parent_path() / (stem + ".tmp" + std::to_string(::getpid()) + ext);
   }
+  guard_.emplace(temporary_);
 }
 
 AtomicOutput::~AtomicOutput() {

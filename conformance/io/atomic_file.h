@@ -11,10 +11,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "conformance/io/temporary_files.h"
 
 namespace voxref::io {
 
@@ -39,7 +42,8 @@ OutputKind outputKind(const std::filesystem::path& destination);
 
 // A temporary path beside `destination` ("<name>.tmp<pid>.<ext>", keeping the extension so that
 // format libraries recognise it). commit() renames it onto the destination; the destructor
-// removes it if commit() was not reached. For a Stream destination the temporary lies in the
+// removes it if commit() was not reached, and so does SIGINT, SIGTERM or SIGHUP once
+// removeTemporariesOnSignals() has run (temporary_files.h). For a Stream destination the temporary lies in the
 // system's temporary folder and commit() copies it into the stream (not atomic, see above).
 // Throws IoError as outputKind() does.
 class AtomicOutput {
@@ -55,6 +59,7 @@ class AtomicOutput {
   std::filesystem::path destination_, temporary_;
   OutputKind kind_ = OutputKind::Atomic;
   bool committed_ = false;
+  std::optional<TemporaryFileGuard> guard_;  // destroyed after the destructor's removal
 };
 
 // Throws IoError naming the path (directory missing, disk full, permission).

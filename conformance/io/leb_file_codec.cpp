@@ -27,12 +27,14 @@ std::uint64_t bytesPerSample(VoxelType t) { return t == VoxelType::UInt8 ? 1 : 2
 
 // A temporary file for `destination` (the gradients of an encode, the gradients nobody asked for
 // of a decode) in the folder of its temporary output (beside it, or the system's temporary folder
-// for a device or pipe: atomic_file.h), removed when this goes out of scope.
+// for a device or pipe: atomic_file.h), removed when this goes out of scope or the process is
+// ended by a signal (temporary_files.h).
 class ScratchFile {
  public:
   ScratchFile(const AtomicOutput& output, const std::filesystem::path& destination, const std::string& what)
       : path_(output.temporary().parent_path() /
-              ("." + destination.filename().string() + ".tmp" + std::to_string(::getpid()) + "." + what)) {}
+              ("." + destination.filename().string() + ".tmp" + std::to_string(::getpid()) + "." + what)),
+        guard_(path_) {}
   ScratchFile(const ScratchFile&) = delete;
   ScratchFile& operator=(const ScratchFile&) = delete;
   ~ScratchFile() {
@@ -43,6 +45,7 @@ class ScratchFile {
 
  private:
   std::filesystem::path path_;
+  TemporaryFileGuard guard_;
 };
 
 // The samples of `input`: mapped, or for a ".gz" inflated into `held`.

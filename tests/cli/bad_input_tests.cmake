@@ -449,3 +449,12 @@ foreach(kind character_device fifo socket symlink)
   set_tests_properties(badinput.output_not_a_regular_file.${kind} PROPERTIES LABELS "badinput;cli;sanitize" TIMEOUT 120 FIXTURES_REQUIRED bi_leb
                        SKIP_REGULAR_EXPRESSION "VOXREF_TEST_SKIPPED:" FAIL_REGULAR_EXPRESSION "FAIL:")
 endforeach()
+
+# A run ended by SIGINT or SIGTERM removes its temporary files; SIGKILL, which no process can
+# handle, is the control that shows they existed (tests/cli/killed_outputs.sh).
+foreach(kind decode_sigterm encode_sigint decode_sigkill)
+  add_test(NAME badinput.killed_run_leaves_no_temporaries.${kind}
+           COMMAND sh "${CMAKE_CURRENT_SOURCE_DIR}/cli/killed_outputs.sh" ${kind} "${voxref_bin}" "${good}/volume.vxleb" "${good}/volume.raw.gz" "${bi}/t/killed_${kind}")
+  set_tests_properties(badinput.killed_run_leaves_no_temporaries.${kind} PROPERTIES LABELS "badinput;cli;sanitize" TIMEOUT 120 FIXTURES_REQUIRED bi_leb
+                       FAIL_REGULAR_EXPRESSION "FAIL:")
+endforeach()

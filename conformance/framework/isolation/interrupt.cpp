@@ -11,14 +11,18 @@ namespace voxref::conf::isolation {
 namespace {
 
 // Signal handlers may touch only lock-free atomics and async-signal-safe calls (POSIX.1-2017,
-// section 2.4.3): write() to the pipe and the sig_atomic_t below.
+// section 2.4.3): write() to the pipe, sigaction() and raise(), and the sig_atomic_t below.
 volatile sig_atomic_t gSignal = 0;
 int gPipe[2] = {-1, -1};
 struct sigaction gOldInt, gOldTerm;
 
 void onSignal(int sig) {
-  if (gSignal != 0) {  // the second one: the default action, now
-    signal(sig, SIG_DFL);
+  if (gSignal != 0) {  // the second one: what the signal did before the guard, now
+    // The handler before the guard removes the temporary files (io/temporary_files.h) and then
+    // takes the default action; a signal the process ignored before gets the default action too.
+    struct sigaction before = sig == SIGINT ? gOldInt : gOldTerm;
+    if (before.sa_handler == SIG_IGN) before.sa_handler = SIG_DFL;
+    sigaction(sig, &before, nullptr);
     raise(sig);
     return;
   }

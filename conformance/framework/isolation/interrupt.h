@@ -1,7 +1,8 @@
 // Ctrl-C (SIGINT) and SIGTERM during a run. While an InterruptGuard lives, the first such signal
 // only records itself (the handler writes one byte to a pipe the run polls), so the run can kill
-// its children and write a partial report that says it is partial; a second one ends the process
-// at once, as the signal's default action does.
+// its children and write a partial report that says it is partial; a second one goes to the
+// handler the guard replaced (voxref's main installs io::removeTemporariesOnSignals, which removes
+// the temporary files and ends the process as the signal's default action does).
 #pragma once
 
 namespace voxref::conf::isolation {
