@@ -84,20 +84,28 @@ OutputKind outputKind(const std::filesystem::path& destination) {
   }
 }
 
-AtomicOutput::AtomicOutput(std::filesystem::path destination)
-    : destination_(resolved(destination)), kind_(outputKind(destination_)) {
-  const std::string stem = destination_.stem().string();
-  const std::string ext = destination_.extension().string();
-  if (kind_ == OutputKind::Stream) {
+namespace {
+
+// The temporary of a destination of that kind (atomic_file.h, AtomicOutput).
+std::filesystem::path temporaryFor(const std::filesystem::path& destination, OutputKind kind) {
+  const std::string stem = destination.stem().string();
+  const std::string ext = destination.extension().string();
+  if (kind == OutputKind::Stream) {
     // Nothing is created beside a device or pipe (that folder may be /dev).
     std::error_code ec;
     const std::filesystem::path tmp = std::filesystem::temp_directory_path(ec);
-    temporary_ = (ec ? std::filesystem::path("/tmp") : tmp) / ("voxref-" + stem + ".tmp" + uniqueSuffix() + ext);
-  } else {
-    temporary_ = destination_.parent_path() / (stem + ".tmp" + std::to_string(::getpid()) + ext);
+    return (ec ? std::filesystem::path("/tmp") : tmp) / ("voxref-" + stem + ".tmp" + uniqueSuffix() + ext);
   }
-  guard_.emplace(temporary_);
+  return destination.parent_path() / (stem + ".tmp" + std::to_string(::getpid()) + ext);
 }
+
+}  // namespace
+
+AtomicOutput::AtomicOutput(std::filesystem::path destination)
+    : destination_(resolved(destination)),
+      kind_(outputKind(destination_)),
+      temporary_(temporaryFor(destination_, kind_)),
+      guard_(temporary_) {}
 
 AtomicOutput::~AtomicOutput() {
   if (!committed_ || kind_ == OutputKind::Stream) {

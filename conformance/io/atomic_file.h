@@ -11,7 +11,6 @@
 #pragma once
 
 #include <filesystem>
-#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -56,10 +55,11 @@ class AtomicOutput {
   void commit();  // throws IoError
 
  private:
-  std::filesystem::path destination_, temporary_;
-  OutputKind kind_ = OutputKind::Atomic;
+  std::filesystem::path destination_;
+  OutputKind kind_;
+  std::filesystem::path temporary_;
+  TemporaryFileGuard guard_;  // destroyed after the destructor's removal
   bool committed_ = false;
-  std::optional<TemporaryFileGuard> guard_;  // destroyed after the destructor's removal
 };
 
 // Throws IoError naming the path (directory missing, disk full, permission).

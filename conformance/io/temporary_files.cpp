@@ -13,7 +13,7 @@ namespace voxref::io {
 namespace {
 
 // A signal handler may call only async-signal-safe functions and touch lock-free atomics (POSIX.1-2017,
-// section 2.4.3): unlink(), getpid(), signal() and raise() are on that list, so the table is fixed
+// section 2.4.3): unlink(), getpid() and raise() are on that list, so the table is fixed
 // storage that a handler reads without locks or allocation.
 enum SlotState : int { kFree = 0, kWriting = 1, kLive = 2 };
 struct Slot {

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,20 +39,27 @@ int inChild(Body body) {
   return status;
 }
 
-// The child guards its file, installs the handlers and raises SIGTERM: the file is gone and the
-// child ended by SIGTERM (the exit status names the signal). An unguarded file beside it stays.
+// A child that makes `path`, guards it while `guardAlive` (else only for a moment), installs the
+// handlers and raises `sig`; returns its wait status.
+int signalledChild(const std::filesystem::path& path, bool guardAlive, int sig) {
+  return inChild([&] {
+    touch(path);
+    std::optional<TemporaryFileGuard> guard(std::in_place, path);
+    if (!guard->guarded()) _exit(3);
+    if (!guardAlive) guard.reset();
+    removeTemporariesOnSignals();
+    raise(sig);
+    _exit(4);  // not reached
+  });
+}
+
+// The guarded file is gone and the child ended by SIGTERM (the exit status names the signal); an
+// unguarded file beside it stays.
 TEST(TemporaryFiles, ASignalRemovesGuardedFilesAndEndsTheProcessByThatSignal) {
   const auto dir = scratchDir("signal");
   const auto guarded = dir / "out.tmp1.raw", other = dir / "other.raw";
   touch(other);
-  const int status = inChild([&] {
-    touch(guarded);
-    TemporaryFileGuard guard(guarded);
-    if (!guard.guarded()) _exit(3);
-    removeTemporariesOnSignals();
-    raise(SIGTERM);
-    _exit(4);  // not reached
-  });
+  const int status = signalledChild(guarded, true, SIGTERM);
   ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
   EXPECT_FALSE(std::filesystem::exists(guarded));
@@ -64,13 +72,8 @@ TEST(TemporaryFiles, ASignalRemovesGuardedFilesAndEndsTheProcessByThatSignal) {
 TEST(TemporaryFiles, AFinishedGuardNoLongerRemovesItsPath) {
   const auto dir = scratchDir("finished");
   const auto path = dir / "kept.raw";
-  const int status = inChild([&] {
-    touch(path);
-    { TemporaryFileGuard guard(path); }
-    removeTemporariesOnSignals();
-    raise(SIGINT);
-  });
-  ASSERT_TRUE(WIFSIGNALED(status));
+  const int status = signalledChild(path, false, SIGINT);
+  ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
   EXPECT_EQ(WTERMSIG(status), SIGINT);
   EXPECT_TRUE(std::filesystem::exists(path));
   std::filesystem::remove_all(dir);
