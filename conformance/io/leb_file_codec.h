@@ -1,8 +1,8 @@
 // The LEB codec between files in bounded memory (Gregorski et al. 2004 compress volumes far larger
 // than memory; reference/leb/leb_codec.h does the work): the volume, its gradients and the stream
-// are file mappings (mapped_file.h), trimmed whenever the process's resident memory exceeds the
-// window, so what stays resident is the window, the shell of padding and one batch of pages, not
-// the volume. Outputs are written beside their destinations and renamed into place when complete
+// are file mappings (mapped_file.h), trimmed whenever their resident pages exceed the window, so
+// what stays resident is the window, the shell of padding and one batch of pages, not the volume.
+// Outputs are written beside their destinations and renamed into place when complete
 // (atomic_file.h).
 #pragma once
 
@@ -17,7 +17,8 @@
 
 namespace voxref::io {
 
-// The resident memory past which mappings are trimmed, unless the caller says otherwise.
+// The resident pages of file mappings past which mappings are trimmed, unless the caller says
+// otherwise (ResidentWindow).
 inline constexpr std::uint64_t kLebWindowBytes = std::uint64_t{512} << 20;
 
 // Told how far a long step has come: the fraction of its work (0..1) and what it is doing.

@@ -95,15 +95,16 @@ void MappedFile::flush() {
     throw IoError("cannot write " + path_.string() + ": " + std::strerror(errno));
 }
 
-std::uint64_t residentBytes() {
+std::uint64_t fileResidentBytes() {
+  // statm's fields, in pages: size, resident, shared (resident file-backed and shmem pages); proc(5).
   std::ifstream statm("/proc/self/statm");
-  std::uint64_t size = 0, resident = 0;
-  statm >> size >> resident;
-  return resident * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  std::uint64_t size = 0, resident = 0, shared = 0;
+  statm >> size >> resident >> shared;
+  return shared * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
 ResidentWindow::ResidentWindow(std::uint64_t budget, std::vector<MappedFile*> mappings)
-    : budget_(budget), mappings_(std::move(mappings)) {
+    : budget_(budget), base_(fileResidentBytes()), mappings_(std::move(mappings)) {
   watcher_ = std::jthread([this](std::stop_token stop) {
     while (!stop.stop_requested()) {
       std::this_thread::sleep_for(std::chrono::milliseconds(kResidentWindowPollMs));
@@ -118,7 +119,8 @@ ResidentWindow::~ResidentWindow() {
 }
 
 void ResidentWindow::operator()() {
-  if (residentBytes() <= budget_) return;
+  const std::uint64_t now = fileResidentBytes();
+  if (now <= base_ || now - base_ <= budget_) return;
   const std::lock_guard<std::mutex> lock(mutex_);
   for (MappedFile* m : mappings_) m->trim();
   ++trims_;
