@@ -228,8 +228,8 @@ BenchTable lebPaperScaleBench(const BenchOptions& o) {
       bytesText(static_cast<double>(io::kLebWindowBytes)) +
       "; peak RSS is its VmHWM, mapped file pages included. The decoded samples are compared with the input "
       "bit for bit, and the decoded gradients with the input's gradients made slice by slice. Runs only when "
-      "named (--filter leb.paper_scale): its encode takes about 35 minutes on 2 cores, and its decode, under the "
-      "window, several hours (docs/leb.md, 'Streaming between files'); it needs " +
+      "named (--filter leb.paper_scale): its encode takes about 35 minutes on 2 cores and its decode about 18 "
+      "(docs/leb.md, 'Streaming between files'); it needs " +
       bytesText(needed) + " of scratch disk in the output folder, removed after.";
   return t;
 }
