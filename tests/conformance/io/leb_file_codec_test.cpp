@@ -7,17 +7,10 @@
 
 #include "conformance/io/atomic_file.h"
 #include "reference/leb/gradients.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::io {
 namespace {
-
-// A folder of each test's own (ctest runs the cases side by side), emptied first.
-std::filesystem::path codecFolder(const std::string& test) {
-  const auto dir = std::filesystem::temp_directory_path() / "voxref-leb-file-codec-test" / test;
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // A smooth field plus noise of `bits` bits, and its raw file (uint16 little endian).
 ref::Volume<std::uint16_t> volumeOf(const ref::Dims3& d, int bits, const std::filesystem::path& raw) {
@@ -46,7 +39,7 @@ class LebFileCodec : public ::testing::TestWithParam<Case> {};
 TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
   const Case c = GetParam();
   const std::string name = ref::dimsText(c.dims) + "_" + std::to_string(c.bits);
-  const auto dir = codecFolder(name);
+  const test::ScratchFolder dir;
   const auto raw = dir / (name + ".raw"), stream = dir / (name + ".vxleb"), back = dir / (name + ".back.raw"),
              grads = dir / (name + ".grad");
   const ref::Volume<std::uint16_t> v = volumeOf(c.dims, c.bits, raw);
@@ -73,7 +66,7 @@ INSTANTIATE_TEST_SUITE_P(Volumes, LebFileCodec,
                                            Case{{1025, 1, 1}, 8}));
 
 TEST(LebFileCodecErrors, NameTheFileAndLeaveNothing) {
-  const auto dir = codecFolder("errors");
+  const test::ScratchFolder dir;
   const auto raw = dir / "err.raw", stream = dir / "err.vxleb";
   volumeOf({16, 16, 16}, 8, raw);
   std::filesystem::remove(stream);

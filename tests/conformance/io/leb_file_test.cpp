@@ -7,20 +7,16 @@
 #include "conformance/io/raw_volume.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_codec.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::io {
 namespace {
-
-std::filesystem::path scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "voxref-leb-file-test";
-  std::filesystem::create_directories(dir);
-  return dir / name;
-}
 
 TEST(LebFile, EverySharedVolumeRoundTripsLosslessly) {
   const std::filesystem::path dir = VOXREF_SHARED_VOLUMES;
   if (!std::filesystem::exists(dir)) GTEST_SKIP() << dir << " is missing";
   const std::regex name(R"(([a-z_]+)_(\d+)x(\d+)x(\d+)_uint8\.raw\.gz)");
+  const test::ScratchFolder scratch;
   int volumes = 0;
   for (const auto& entry : std::filesystem::directory_iterator(dir)) {
     std::smatch m;
@@ -30,7 +26,7 @@ TEST(LebFile, EverySharedVolumeRoundTripsLosslessly) {
     const ref::Dims3 dims{std::stoi(m[2]), std::stoi(m[3]), std::stoi(m[4])};
     const ref::Volume<std::uint8_t> v8 = readRawVolumeU8(entry.path(), dims);
     const ref::Volume<std::uint16_t> v(dims, std::vector<std::uint16_t>(v8.data().begin(), v8.data().end()));
-    const auto path = scratch(m[1].str() + ".vxleb");
+    const auto path = scratch / (m[1].str() + ".vxleb");
     writeLebFile(path, ref::encodeLeb(v, 8));
     const ref::LebDecoded d = ref::decodeLeb(readLebFile(path));
     EXPECT_EQ(d.data.data(), v.data());
@@ -41,13 +37,14 @@ TEST(LebFile, EverySharedVolumeRoundTripsLosslessly) {
 }
 
 TEST(LebFile, ErrorsNameTheFile) {
+  const test::ScratchFolder scratch;
   try {
-    readLebFile(scratch("none.vxleb"));
+    readLebFile(scratch / "none.vxleb");
     FAIL();
   } catch (const IoError& e) {
     EXPECT_NE(std::string(e.what()).find("none.vxleb does not exist"), std::string::npos);
   }
-  const auto bad = scratch("bad.vxleb");
+  const auto bad = scratch / "bad.vxleb";
   writeFileAtomically(bad, "VXLB but far too short");
   try {
     readLebFile(bad);

@@ -5,16 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/scratch_folder.h"
+
 namespace voxref::io {
 namespace {
 
 constexpr std::uint64_t kMiB = std::uint64_t{1} << 20;
-
-std::filesystem::path fileFor(const std::string& test) {
-  const auto dir = std::filesystem::temp_directory_path() / "voxref-mapped-file-test";
-  std::filesystem::create_directories(dir);
-  return dir / (test + ".bin");
-}
 
 // Touches every page of `bytes` so that it is resident.
 void touch(std::uint8_t* bytes, std::uint64_t size) {
@@ -25,8 +21,8 @@ void touch(std::uint8_t* bytes, std::uint64_t size) {
 // make a 16 MiB window trim (the 2048x2048x1920 decode stalled when the codec's own heap passed the
 // window by itself and every look trimmed), while 32 MiB of a watched mapping must.
 TEST(ResidentWindow, TrimsForMappedPagesNotForTheHeap) {
-  const auto path = fileFor("window");
-  MappedFile file = MappedFile::create(path, 32 * kMiB);
+  const test::ScratchFolder scratch;
+  MappedFile file = MappedFile::create(scratch / "window.bin", 32 * kMiB);
   {
     const std::uint64_t before = fileResidentBytes();
     ResidentWindow window(16 * kMiB, {&file});
@@ -42,7 +38,6 @@ TEST(ResidentWindow, TrimsForMappedPagesNotForTheHeap) {
   // Nothing written was lost: the trimmed pages come back from the file.
   for (std::uint64_t i = 0; i < file.size(); i += 4096)
     ASSERT_EQ(file.data()[i], static_cast<std::uint8_t>(i >> 12 | 1));
-  std::filesystem::remove(path);
 }
 
 }  // namespace

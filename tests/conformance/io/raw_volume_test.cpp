@@ -9,14 +9,13 @@
 #include <string>
 
 #include "conformance/io/atomic_file.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::io {
 namespace {
 
 class RawVolume : public ::testing::Test {
  protected:
-  void SetUp() override { std::filesystem::create_directories(dir_); }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   std::filesystem::path write(const std::string& name, const std::string& bytes, bool gzip) {
     const auto p = dir_ / name;
     if (gzip) {
@@ -28,8 +27,7 @@ class RawVolume : public ::testing::Test {
     }
     return p;
   }
-  std::filesystem::path dir_ =
-      std::filesystem::temp_directory_path() / ("voxref_raw_volume_test_" + std::to_string(::getpid()));
+  const test::ScratchFolder dir_;
 };
 
 // The reader grows its buffer with what it has read (64 KiB, then doubling): volumes across
@@ -135,10 +133,10 @@ TEST_F(RawVolume, AGzipStreamMustBeWholeAndItsChecksumMustMatch) {
 
 TEST_F(RawVolume, AFolderIsNotAVolume) {
   try {
-    (void)readRawVolumeU8(dir_, {1, 1, 1});
+    (void)readRawVolumeU8(dir_.path(), {1, 1, 1});
     FAIL() << "no error";
   } catch (const IoError& e) {
-    EXPECT_EQ(std::string(e.what()), "volume file " + dir_.string() + " is not a regular file");
+    EXPECT_EQ(std::string(e.what()), "volume file " + dir_.path().string() + " is not a regular file");
   }
 }
 

@@ -13,16 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/scratch_folder.h"
+
 namespace voxref::io {
 namespace {
-
-std::filesystem::path scratchDir(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() /
-                   ("voxref-temporary-files-test-" + name + "-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 void touch(const std::filesystem::path& p) { std::ofstream(p) << "x"; }
 
@@ -56,7 +50,7 @@ int signalledChild(const std::filesystem::path& path, bool guardAlive, int sig) 
 // The guarded file is gone and the child ended by SIGTERM (the exit status names the signal); an
 // unguarded file beside it stays.
 TEST(TemporaryFiles, ASignalRemovesGuardedFilesAndEndsTheProcessByThatSignal) {
-  const auto dir = scratchDir("signal");
+  const test::ScratchFolder dir;
   const auto guarded = dir / "out.tmp1.raw", other = dir / "other.raw";
   touch(other);
   const int status = signalledChild(guarded, true, SIGTERM);
@@ -64,24 +58,22 @@ TEST(TemporaryFiles, ASignalRemovesGuardedFilesAndEndsTheProcessByThatSignal) {
   EXPECT_EQ(WTERMSIG(status), SIGTERM);
   EXPECT_FALSE(std::filesystem::exists(guarded));
   EXPECT_TRUE(std::filesystem::exists(other));
-  std::filesystem::remove_all(dir);
 }
 
 // A guard that has gone out of scope protects nothing any more: the file (an output renamed
 // into place would have that name no longer, but a later file might) stays.
 TEST(TemporaryFiles, AFinishedGuardNoLongerRemovesItsPath) {
-  const auto dir = scratchDir("finished");
+  const test::ScratchFolder dir;
   const auto path = dir / "kept.raw";
   const int status = signalledChild(path, false, SIGINT);
   ASSERT_TRUE(WIFSIGNALED(status)) << "status " << status;
   EXPECT_EQ(WTERMSIG(status), SIGINT);
   EXPECT_TRUE(std::filesystem::exists(path));
-  std::filesystem::remove_all(dir);
 }
 
 // A forked child inherits its parent's guards but never removes the parent's files.
 TEST(TemporaryFiles, AForkedChildLeavesItsParentsFiles) {
-  const auto dir = scratchDir("fork");
+  const test::ScratchFolder dir;
   const auto parentsFile = dir / "parent.tmp.raw";
   const int status = inChild([&] {
     touch(parentsFile);
@@ -92,7 +84,6 @@ TEST(TemporaryFiles, AForkedChildLeavesItsParentsFiles) {
   });
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0) << "the grandchild removed its parent's file, or did not end by SIGTERM";
-  std::filesystem::remove_all(dir);
 }
 
 // The table is fixed storage: kMaxGuardedTemporaries paths at once, and a path that does not fit

@@ -1,7 +1,5 @@
 #include "conformance/io/timevarying_file.h"
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 
@@ -9,15 +7,14 @@
 
 #include "conformance/io/raw_volume.h"
 #include "reference/timevarying/plume.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::io {
 namespace {
 
 // Errors of a file name the file, then the container's offset and field.
 TEST(TimeVaryingFile, ErrorsNameTheFileThenTheOffset) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("voxref-tvfile-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchFolder dir;
   ref::TimeVaryingFile f;
   f.transfer = ref::transferFunction("plume");
   f.textures = ref::encodeTimeVarying(ref::dischargePlume({16, 2, 400.0}), f.transfer, {2});
@@ -31,7 +28,6 @@ TEST(TimeVaryingFile, ErrorsNameTheFileThenTheOffset) {
     EXPECT_EQ(std::string(e.what()),
               (dir / "bad.vxtv").string() + ": offset 0: magic: expected 'VXTV' (not a .vxtv file)");
   }
-  std::filesystem::remove_all(dir);
 }
 
 TEST(TimeVaryingFile, EverySharedVolumeRoundTripsAsOneTimeStep) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/scratch_folder.h"
+
 namespace voxref::conf {
 namespace {
 
@@ -69,8 +71,7 @@ TEST(PatternsFile, MatchesAnywhereInTheIdAndRejectsABadExpression) {
 }
 
 TEST(CaseList, ReadsIdsAndRefusesDuplicatesAcrossFiles) {
-  const auto dir = std::filesystem::temp_directory_path() / ("voxref-caselist-" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchFolder dir;
   std::ofstream(dir / "a.txt") << "# first\nsparsegrid.hard.level1\niso.hard.single_voxel\n";
   std::ofstream(dir / "b.txt") << "timevarying.hard.flag_collision.paper\nsparsegrid.hard.level1\n";
   const auto one = readCaseLists({dir / "a.txt"});
@@ -84,8 +85,8 @@ TEST(CaseList, ReadsIdsAndRefusesDuplicatesAcrossFiles) {
       (dir / "b.txt").string() + ":2: sparsegrid.hard.level1 is already listed at " + (dir / "a.txt").string() + ":2");
   EXPECT_EQ(errorOf([&] { readCaseLists({dir / "missing.txt"}); }),
             "case list " + (dir / "missing.txt").string() + " does not exist");
-  EXPECT_EQ(errorOf([&] { readExpectations({dir}, {}, {}); }), "fails file " + dir.string() + " is not a regular file");
-  std::filesystem::remove_all(dir);
+  EXPECT_EQ(errorOf([&] { readExpectations({dir.path()}, {}, {}); }),
+            "fails file " + dir.path().string() + " is not a regular file");
 }
 
 }  // namespace

@@ -1,6 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 
@@ -9,6 +8,7 @@
 #include "conformance/framework/report/html_index.h"
 #include "conformance/framework/report/html_report.h"
 #include "conformance/io/atomic_file.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::conf {
 namespace {
@@ -208,9 +208,8 @@ TEST(HtmlCasePage, WorstPixelsAreMagnifiedWithValuesAndIntervals) {
 }
 
 TEST(HtmlReport, WritesIndexAndCasePages) {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("voxref-html-test-" + std::to_string(::getpid()));
-  std::filesystem::remove_all(dir);
+  const test::ScratchFolder scratch;
+  const std::filesystem::path dir = scratch / "report";  // the report makes its folder
   writeHtmlReport(dir, run(false),
                   {result("a.one", "sparsegrid", Status::Pass), result("a/two", "sparsegrid", Status::Fail)});
   const std::string index = io::readWholeFile(dir / "index.html");
@@ -220,7 +219,6 @@ TEST(HtmlReport, WritesIndexAndCasePages) {
   std::size_t files = 0;
   for (const auto& e : std::filesystem::recursive_directory_iterator(dir)) files += e.is_regular_file();
   EXPECT_EQ(files, 3u) << "no temporary file left behind";
-  std::filesystem::remove_all(dir);
 }
 
 // Without a profile nothing modelled the driver's departures: the index says they are unknown, never

@@ -8,6 +8,7 @@
 #include <limits>
 
 #include "conformance/framework/report/results_json.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::conf {
 namespace {
@@ -52,8 +53,7 @@ TEST(ResultsReader, CaseJsonRoundTrips) {
 }
 
 TEST(ResultsReader, RejectsWhatIsNotAResultsFile) {
-  const auto dir = std::filesystem::temp_directory_path() / ("voxref_results_reader_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
+  const test::ScratchFolder dir;
   auto write = [&](const char* name, const std::string& text) {
     std::ofstream(dir / name) << text;
     return dir / name;
@@ -76,7 +76,6 @@ TEST(ResultsReader, RejectsWhatIsNotAResultsFile) {
   RunInfo run;
   const auto good = write("good.json", resultsJson(run, {everyField()}).dump());
   EXPECT_EQ(loadResults(good).cases.size(), 1u);
-  std::filesystem::remove_all(dir);
 }
 
 // Found by tests/fuzz/results_json_fuzz.cpp (tests/fuzz/regressions/results_json): each once let

@@ -4,6 +4,7 @@
 
 #include "conformance/io/atomic_file.h"
 #include "conformance/modules/sparsegrid/sparsegrid_catalog.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::conf {
 namespace {
@@ -78,8 +79,7 @@ TEST(SparseGridScene, PlaneKeyIgnoresOnlyTheShading) {
 }
 
 TEST(LoadField, VolumeWithWrongSizeOrMissingFileIsAClearError) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "voxref_scene_test";
-  io::ensureDirectory(dir);
+  const test::ScratchFolder dir;
   io::writeFileAtomically(dir / "tiny.raw", std::string(27, '\x10'));
   DataSource d;
   d.volume = dir / "tiny.raw";
