@@ -57,6 +57,15 @@ class HzOrder {
   // range whose points all lie inside (a caller then walks them). Costs a few operations per level,
   // not per point.
   bool allInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const;
+  // forEachInside by cells, for a range of one level whose points all lie inside the box
+  // (allInside(dims, begin, end) is true; begin >= 8, no root corner): calls
+  // f(h, base, level, scaleLog2, odd, first, last) for each cell with points in [begin, end), in
+  // index order. The cell's points in the range are base + 2^scaleLog2 * (the axes of odd[o]) for o
+  // in [first, last), with indices h, h + 1, ...: the points forEachInside gives, in its order, and
+  // their odd axes. The whole-volume decoder's walk (leb_codec.cpp) takes its per-cell work out of
+  // the per-point loop this way.
+  template <class F>
+  void forEachCellInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
 
  private:
   friend class HzCursor;
@@ -296,6 +305,33 @@ void HzOrder::forEachInside(const std::array<int, 3>& dims, std::uint64_t begin,
     };
     const int origin[3] = {0, 0, 0};
     hz_detail::mortonDescend(nf, limit, nf == 0 ? 0 : lv.cellBits, 0, origin, part.mlo, part.mhi, leaf);
+    return true;
+  });
+}
+
+template <class F>
+void HzOrder::forEachCellInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const {
+  end = std::min(end, size());
+  const int side = grid_.side();
+  forEachBlockPart(dims, begin, end, [&](const BlockPart& part) {
+    const Block& blk = part.blk;
+    const std::uint64_t orientations = blk.orientations.size();
+    const int cellSide = 2 << part.lv.scaleLog2, nf = part.nf;
+    // The low nf bits of a cell's code are bit 0 of its free coordinates (mortonEncode): the rest
+    // is decoded once per group of 2^nf cells.
+    const std::uint64_t group = (std::uint64_t{1} << nf) - 1;
+    int high[3] = {0, 0, 0};
+    for (std::uint64_t m = part.mlo; m < part.mhi; ++m) {
+      if (m == part.mlo || (m & group) == 0) mortonDecode(m & ~group, nf, high);
+      GridPoint base{side, side, side};
+      for (int i = 0; i < nf; ++i)
+        base[static_cast<std::size_t>(part.axis[i])] = cellSide * (high[i] | static_cast<int>((m >> i) & 1u));
+      const std::uint64_t h0 = blk.begin + m * orientations;  // the cell's first point
+      const int first = h0 < begin ? static_cast<int>(begin - h0) : 0;
+      const int last = static_cast<int>(std::min(orientations, end - h0));
+      f(h0 + static_cast<std::uint64_t>(first), base, part.level, part.lv.scaleLog2, blk.orientations.data(), first,
+        last);
+    }
     return true;
   });
 }

@@ -133,6 +133,49 @@ TEST(HzOrder, ForEachInsideIsTheWalkFilteredByTheBox) {
   }
 }
 
+// forEachCellInside gives, cell by cell, the points of a range wholly inside the box that the
+// cursor (the inverse of the index, point by point) walks: the same indices, points and odd axes,
+// in the same order. Ranges of pages within one level and across levels, on grids and boxes where
+// allInside holds.
+TEST(HzOrder, ForEachCellInsideGivesTheCursorsPointsByCells) {
+  std::mt19937 rng(44);
+  for (int k : {1, 3, 5}) {
+    const LebGrid g = makeLebGrid(k);
+    const HzOrder order(g);
+    const int n = g.pointsPerAxis();
+    int ranges = 0;
+    for (int trial = 0; trial < 400 && ranges < 60; ++trial) {
+      std::array<int, 3> dims{n, n, n};
+      if (trial % 2 == 1)
+        for (int a = 0; a < 3; ++a) dims[a] = 1 + static_cast<int>(rng() % static_cast<unsigned>(n));
+      const int p = static_cast<int>(rng() % 9);
+      std::uint64_t begin = 8 + rng() % (order.size() - 8), end = begin + 1 + rng() % (std::uint64_t{1} << p);
+      end = std::min(end, order.size());
+      if (!order.allInside(dims, begin, end)) continue;
+      ++ranges;
+      std::vector<std::array<std::uint64_t, 5>> walked, given;
+      for (HzCursor c(order, begin); !c.done() && c.index() < end; c.next())
+        walked.push_back({c.index(), static_cast<std::uint64_t>(c.point()[0]), static_cast<std::uint64_t>(c.point()[1]),
+                          static_cast<std::uint64_t>(c.point()[2]), c.oddAxes()});
+      order.forEachCellInside(
+          dims, begin, end,
+          [&](std::uint64_t h, const GridPoint& base, int level, int s, const unsigned* odd, int first, int last) {
+            ASSERT_LT(first, last);
+            for (int o = first; o < last; ++o, ++h) {
+              GridPoint q = base;
+              for (int a = 0; a < 3; ++a) q[a] += ((odd[o] >> a) & 1u) ? (1 << s) : 0;
+              ASSERT_EQ(classifyPoint(g, q).level, level);
+              given.push_back({h, static_cast<std::uint64_t>(q[0]), static_cast<std::uint64_t>(q[1]),
+                               static_cast<std::uint64_t>(q[2]), odd[o]});
+            }
+          });
+      EXPECT_EQ(given, walked) << "k " << k << ", box " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", [" << begin
+                               << ", " << end << ")";
+    }
+    EXPECT_GE(ranges, 30) << "k " << k << ": too few ranges wholly inside the box were tried";
+  }
+}
+
 // allInside is true only for ranges whose every point lies inside the box (the full walk checks
 // each), always for a box that holds the grid, and for most pages of a box that cuts it.
 TEST(HzOrder, AllInsideHoldsOnlyForRangesWhollyInsideTheBox) {
