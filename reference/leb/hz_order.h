@@ -62,8 +62,8 @@ class HzOrder {
   // f(h, base, level, scaleLog2, odd, first, last) for each cell with points in [begin, end), in
   // index order. The cell's points in the range are base + 2^scaleLog2 * (the axes of odd[o]) for o
   // in [first, last), with indices h, h + 1, ...: the points forEachInside gives, in its order, and
-  // their odd axes. The whole-volume decoder's walk (leb_codec.cpp) takes its per-cell work out of
-  // the per-point loop this way.
+  // their odd axes. The codec's walk (leb_codec.cpp, encoder and decoder) takes its per-cell work out
+  // of the per-point loop this way.
   template <class F>
   void forEachCellInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
 

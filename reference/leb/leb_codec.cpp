@@ -63,35 +63,104 @@ InsideValues insideOf(const Span& v, LebChannelKind kind) {
 // padding) reads them at volume indices vi + off and vi - off: on every odd axis the edge runs
 // sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a. read(vi, k) is component k
 // of `inside`, with the component count fixed at compile time.
+//
+// The range is walked level by level. A level's part whose points all lie inside the volume
+// (HzOrder::allInside: nearly every page of a volume) goes a cell at a time
+// (HzOrder::forEachCellInside), with the per-point work cut down (issue 18, goal 3): the point is
+// p = base + h on its odd axes, the sign of sigma_a is bit 0 of the cell coordinate (p_a = 2h c_a +
+// h, so p_a >> (log2 h + 1) = c_a), and vi and off come from tables by odd axes and cell parities.
+// The other parts go a point at a time (HzOrder::forEachInside). The same points in the same
+// order, with the same predictions, either way.
 template <int Components, class Read, class ValueOf>
 void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
                  Read&& read, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
   const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
-  order.forEachInside(
-      dims, begin, end, [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
-        const std::size_t vi = volumeIndex(p, dims);
-        LebValues pred{0, 0, 0};
-        if (level >= 0) {
-          const int step = 1 << scaleLog2;
-          std::ptrdiff_t off = 0;
-          bool within = true;
-          for (int a = 0; a < 3; ++a)
-            if ((odd >> a) & 1u) {
-              within = within && p[a] + step < dims[a];
-              off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
-            }
-          if (within) {
-            const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
-            const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
-            for (int k = 0; k < Components; ++k)
-              pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
-          } else {
-            pred = predictPoint(p, level, scaleLog2, odd, Components,
-                                [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
-          }
-        }
-        for (int k = 0; k < Components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
-      });
+  auto onShell = [&](const GridPoint& p, int level, int scaleLog2, unsigned odd) {
+    return predictPoint(p, level, scaleLog2, odd, Components,
+                        [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
+  };
+  auto byPoints = [&](std::uint64_t from, std::uint64_t to) {
+    order.forEachInside(dims, from, to,
+                        [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
+                          const std::size_t vi = volumeIndex(p, dims);
+                          LebValues pred{0, 0, 0};
+                          if (level >= 0) {
+                            const int step = 1 << scaleLog2;
+                            std::ptrdiff_t off = 0;
+                            bool within = true;
+                            for (int a = 0; a < 3; ++a)
+                              if ((odd >> a) & 1u) {
+                                within = within && p[a] + step < dims[a];
+                                off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
+                              }
+                            if (within) {
+                              const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
+                              const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+                              for (int k = 0; k < Components; ++k)
+                                pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
+                            } else {
+                              pred = onShell(p, level, scaleLog2, odd);
+                            }
+                          }
+                          for (int k = 0; k < Components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
+                        });
+  };
+  auto byCells = [&](std::uint64_t from, std::uint64_t to) {
+    int h = 0;                                        // the level's scale; the tables are made for it at the first cell
+    std::ptrdiff_t pointOffset[8], edgeOffset[8][8];  // by odd axes; by odd axes and cell parities
+    order.forEachCellInside(dims, from, to,
+                            [&](std::uint64_t hp, const GridPoint& base, int level, int scaleLog2, const unsigned* odd,
+                                int first, int last) {
+                              if (h != 1 << scaleLog2) {
+                                h = 1 << scaleLog2;
+                                for (unsigned m = 0; m < 8; ++m) {
+                                  pointOffset[m] = 0;
+                                  for (unsigned parity = 0; parity < 8; ++parity) edgeOffset[m][parity] = 0;
+                                  for (int a = 0; a < 3; ++a)
+                                    if ((m >> a) & 1u) {
+                                      pointOffset[m] += h * stride[a];
+                                      for (unsigned parity = 0; parity < 8; ++parity)
+                                        edgeOffset[m][parity] += ((parity >> a) & 1u ? -h : h) * stride[a];
+                                    }
+                                }
+                              }
+                              unsigned parity = 0, within = 0;  // odd cell coordinates; far edges inside
+                              for (int a = 0; a < 3; ++a) {
+                                parity |= static_cast<unsigned>((base[a] >> (scaleLog2 + 1)) & 1) << a;
+                                within |= static_cast<unsigned>(base[a] + 2 * h < dims[a]) << a;
+                              }
+                              const std::ptrdiff_t baseIndex = base[0] + base[1] * stride[1] + base[2] * stride[2];
+                              for (int o = first; o < last; ++o, ++hp) {
+                                const unsigned m = odd[o];
+                                const auto vi = static_cast<std::size_t>(baseIndex + pointOffset[m]);
+                                LebValues pred;
+                                if ((m & ~within) == 0) [[likely]] {
+                                  const std::ptrdiff_t off = edgeOffset[m][parity];
+                                  const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off),
+                                             b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+                                  for (int k = 0; k < Components; ++k)
+                                    pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
+                                } else {
+                                  GridPoint p = base;
+                                  for (int a = 0; a < 3; ++a) p[a] += ((m >> a) & 1u) ? h : 0;
+                                  pred = onShell(p, level, scaleLog2, m);
+                                }
+                                for (int k = 0; k < Components; ++k)
+                                  valueOf(hp, vi, k, pred[static_cast<std::size_t>(k)]);
+                              }
+                            });
+  };
+  end = std::min(end, order.size());  // a run of pages may reach past the grid's last index
+  int level = -1;
+  for (std::uint64_t from = begin; from < end;) {
+    while (order.levelBegin(level + 1) <= from) ++level;
+    const std::uint64_t to = std::min(end, order.levelBegin(level + 1));
+    if (level >= 0 && order.allInside(dims, from, to))
+      byCells(from, to);
+    else
+      byPoints(from, to);
+    from = to;
+  }
 }
 
 template <class ValueOf>
@@ -112,77 +181,6 @@ void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& paddi
     walkChannel<1>(
         order, dims, padding, inside, [&](std::size_t vi, int) { return static_cast<std::int32_t>(inside.data16[vi]); },
         begin, end, valueOf);
-}
-
-// The decoder's walk over a stored page's part of one level whose points all lie inside the volume
-// (HzOrder::allInside; nearly every page of a volume): walkChannel's values, bit for bit, with the
-// per-point work cut down (issue 18, goal 3). The part's deltas are read in one go (the walk reads
-// only coarser levels, as DecodeRun relies on); the points come a cell at a time
-// (HzOrder::forEachCellInside), and a point's split edge is a table lookup: the point is
-// p = base + h (odd axes), and on an odd axis a the edge runs by sigma_a = +-h with the sign of bit
-// 0 of the cell coordinate (splitEdgeSigma: p_a = 2h c_a + h, so p_a >> (log2 h + 1) = c_a), so
-// its endpoints are vi +- off[odd][parities]. A point whose edge leaves the volume (p_a + h past
-// it on an odd axis) is predicted on the shell, as walkChannel does.
-template <int Components, class T>
-void decodeInsidePart(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
-                      const ChannelSpec& spec, T* out, std::uint64_t begin, std::uint64_t end, LebPageReader& reader) {
-  thread_local std::vector<std::int32_t> deltas;
-  deltas.resize(static_cast<std::size_t>(end - begin) * Components);
-  reader.read(std::span<std::int32_t>(deltas));
-  const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
-  const std::int32_t* delta = deltas.data();
-  // Values of T's own width wrap as the conversion to T wraps (two's complement, C++20).
-  const bool wrapsAsT = spec.valueBits == 8 * static_cast<int>(sizeof(T));
-  auto store = [&](std::size_t at, std::int32_t pred) {
-    const std::int32_t v = pred + *delta++;
-    out[at] = static_cast<T>(wrapsAsT ? v : wrapSample(v, spec.valueBits, spec.isSigned));
-  };
-  int tableScale = -1;
-  std::ptrdiff_t pointOffset[8], edgeOffset[8][8];  // by odd axes; by odd axes and cell parities
-  order.forEachCellInside(
-      dims, begin, end,
-      [&](std::uint64_t, const GridPoint& base, int level, int scaleLog2, const unsigned* odd, int first, int last) {
-        const int h = 1 << scaleLog2;
-        if (scaleLog2 != tableScale) {  // one level per part: made once
-          tableScale = scaleLog2;
-          for (unsigned m = 0; m < 8; ++m) {
-            pointOffset[m] = 0;
-            for (unsigned parity = 0; parity < 8; ++parity) edgeOffset[m][parity] = 0;
-            for (int a = 0; a < 3; ++a)
-              if ((m >> a) & 1u) {
-                pointOffset[m] += h * stride[a];
-                for (unsigned parity = 0; parity < 8; ++parity)
-                  edgeOffset[m][parity] += ((parity >> a) & 1u ? -h : h) * stride[a];
-              }
-          }
-        }
-        unsigned parity = 0, within = 0;  // axes where the cell coordinate is odd; where its far edge ends inside
-        for (int a = 0; a < 3; ++a) {
-          parity |= static_cast<unsigned>((base[a] >> (scaleLog2 + 1)) & 1) << a;
-          within |= static_cast<unsigned>(base[a] + 2 * h < dims[a]) << a;
-        }
-        const std::ptrdiff_t baseIndex = base[0] + base[1] * stride[1] + base[2] * stride[2];
-        for (int o = first; o < last; ++o) {
-          const unsigned m = odd[o];
-          const auto vi = static_cast<std::size_t>(baseIndex + pointOffset[m]);
-          if ((m & ~within) == 0) [[likely]] {
-            const std::ptrdiff_t off = edgeOffset[m][parity];
-            const T* a = out + Components * (static_cast<std::ptrdiff_t>(vi) + off);
-            const T* b = out + Components * (static_cast<std::ptrdiff_t>(vi) - off);
-            for (int k = 0; k < Components; ++k)
-              store(Components * vi + static_cast<std::size_t>(k),
-                    predictMidpoint(static_cast<std::int32_t>(a[k]), static_cast<std::int32_t>(b[k])));
-          } else {
-            GridPoint p = base;
-            for (int a = 0; a < 3; ++a) p[a] += ((m >> a) & 1u) ? h : 0;
-            const LebValues shell = predictPoint(p, level, scaleLog2, m, Components, [&](const GridPoint& q, int k) {
-              return padding.valueAt(q, k, inside);
-            });
-            for (int k = 0; k < Components; ++k)
-              store(Components * vi + static_cast<std::size_t>(k), shell[static_cast<std::size_t>(k)]);
-          }
-        }
-      });
 }
 
 // Values of one level's part of a page as the decoder's walk finds them, reconstructed in runs:
@@ -555,18 +553,6 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
                   const int from = first * perBatch, to = std::min(static_cast<int>(segments.size()), last * perBatch);
                   parallelFor(to - from, threads, [&](int i) {
                     const Segment& seg = segments[static_cast<std::size_t>(from + i)];
-                    if (seg.reader && level >= 0 && order.allInside(s.dims, seg.begin, seg.end)) {
-                      if (spec.kind == LebChannelKind::Gradients)
-                        decodeInsidePart<3>(order, s.dims, padding, inside, spec, out.gradients, seg.begin, seg.end,
-                                            *seg.reader);
-                      else if (out.data8)
-                        decodeInsidePart<1>(order, s.dims, padding, inside, spec, out.data8, seg.begin, seg.end,
-                                            *seg.reader);
-                      else
-                        decodeInsidePart<1>(order, s.dims, padding, inside, spec, out.data16, seg.begin, seg.end,
-                                            *seg.reader);
-                      return;
-                    }
                     DecodeRun run(spec, out);
                     walkInside(order, s.dims, padding, inside, seg.begin, seg.end,
                                [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
