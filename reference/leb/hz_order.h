@@ -57,8 +57,8 @@ class HzOrder {
   // range whose points all lie inside (a caller then walks them). Costs a few operations per level,
   // not per point.
   bool allInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const;
-  // forEachInside by cells, for a range of one level whose points all lie inside the box
-  // (allInside(dims, begin, end) is true; begin >= 8, no root corner): calls
+  // forEachInside by cells, for a range whose points all lie inside the box (allInside(dims,
+  // begin, end) is true) and that holds no root corner (begin >= 8): calls
   // f(h, base, level, scaleLog2, odd, first, last) for each cell with points in [begin, end), in
   // index order. The cell's points in the range are base + 2^scaleLog2 * (the axes of odd[o]) for o
   // in [first, last), with indices h, h + 1, ...: the points forEachInside gives, in its order, and
