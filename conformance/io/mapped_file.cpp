@@ -100,7 +100,8 @@ std::uint64_t fileResidentBytes() {
   std::ifstream statm("/proc/self/statm");
   std::uint64_t size = 0, resident = 0, shared = 0;
   statm >> size >> resident >> shared;
-  return shared * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
+  static const auto pageBytes = static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));  // asked once
+  return shared * pageBytes;
 }
 
 ResidentWindow::ResidentWindow(std::uint64_t budget, std::vector<MappedFile*> mappings)

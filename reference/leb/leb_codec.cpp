@@ -79,6 +79,13 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
     return predictPoint(p, level, scaleLog2, odd, Components,
                         [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
   };
+  auto betweenInside = [&](std::size_t vi, std::ptrdiff_t off) {  // the endpoints vi +- off, both inside
+    const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
+    const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+    LebValues pred{0, 0, 0};
+    for (int k = 0; k < Components; ++k) pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
+    return pred;
+  };
   auto byPoints = [&](std::uint64_t from, std::uint64_t to) {
     order.forEachInside(dims, from, to,
                         [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
@@ -93,14 +100,7 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
                                 within = within && p[a] + step < dims[a];
                                 off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
                               }
-                            if (within) {
-                              const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
-                              const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
-                              for (int k = 0; k < Components; ++k)
-                                pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
-                            } else {
-                              pred = onShell(p, level, scaleLog2, odd);
-                            }
+                            pred = within ? betweenInside(vi, off) : onShell(p, level, scaleLog2, odd);
                           }
                           for (int k = 0; k < Components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
                         });
@@ -135,11 +135,7 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
                                 const auto vi = static_cast<std::size_t>(baseIndex + pointOffset[m]);
                                 LebValues pred;
                                 if ((m & ~within) == 0) [[likely]] {
-                                  const std::ptrdiff_t off = edgeOffset[m][parity];
-                                  const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off),
-                                             b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
-                                  for (int k = 0; k < Components; ++k)
-                                    pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
+                                  pred = betweenInside(vi, edgeOffset[m][parity]);
                                 } else {
                                   GridPoint p = base;
                                   for (int a = 0; a < 3; ++a) p[a] += ((m >> a) & 1u) ? h : 0;
