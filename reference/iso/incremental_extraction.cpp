@@ -256,6 +256,10 @@ IsoMesh IncrementalExtraction::update(const DiamondMesh& mesh, GridField& field,
   lastReads_ = 0;
   nextLeaves_.clear();
   nextEmitted_.clear();
+  // Room for twice the last leaves: pages never touched cost nothing, and the lists do not move
+  // while they are built (each move copies them and, on a new mapping, faults again).
+  nextLeaves_.reserve(2 * leaves_.size());
+  nextEmitted_.reserve(2 * emitted_.size());
   if (leaves_.empty()) {
     addAll(mesh, field);
   } else {
@@ -264,8 +268,12 @@ IsoMesh IncrementalExtraction::update(const DiamondMesh& mesh, GridField& field,
   std::swap(leaves_, nextLeaves_);
   std::swap(emitted_, nextEmitted_);
 
+  std::size_t indexCount = 0;
+  for (const Emitted& e : emitted_) indexCount += e.count;
   std::vector<std::uint32_t> indices;
   std::vector<DiamondId> diamonds;
+  indices.reserve(indexCount);
+  diamonds.reserve(indexCount / 3);
   auto leaf = leaves_.begin();  // the crossing leaves, in the same order as their entries
   for (const Emitted& e : emitted_) {
     while ((leaf->bits & kCrossing) == 0) ++leaf;

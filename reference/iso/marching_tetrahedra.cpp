@@ -42,7 +42,7 @@ MeshVertex clippedVertex(const MeshVertex& inside, const MeshVertex& outside, in
 }
 
 IsoMesh assembleIsoMesh(std::vector<std::uint32_t> indices, std::vector<DiamondId> diamonds,
-                        const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+                        std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                         AssemblyScratch* scratch) {
   AssemblyScratch own;
   AssemblyScratch& s = scratch != nullptr ? *scratch : own;
@@ -58,13 +58,24 @@ IsoMesh assembleIsoMesh(std::vector<std::uint32_t> indices, std::vector<DiamondI
     }
     v = remap[v];
   }
-  // Vertices without a gradient take the area-weighted normal of their triangles.
+  // Vertices without a gradient take the area-weighted normal of their triangles (summed only for
+  // them, and only the triangles that touch one: most vertices have a gradient).
+  std::vector<std::uint8_t>& faceNormal = s.faceNormal;
+  faceNormal.assign(used.size(), 0);
+  bool anyFaceNormal = false;
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (normals[used[v]] == glm::dvec3(0.0)) {
+      faceNormal[v] = 1;
+      anyFaceNormal = true;
+    }
   std::vector<glm::dvec3>& faceSum = s.faceSum;
-  faceSum.assign(used.size(), glm::dvec3(0.0));
-  for (std::size_t t = 0; t < indices.size(); t += 3) {
+  faceSum.assign(anyFaceNormal ? used.size() : 0, glm::dvec3(0.0));
+  for (std::size_t t = 0; anyFaceNormal && t < indices.size(); t += 3) {
     const std::uint32_t a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    if ((faceNormal[a] | faceNormal[b] | faceNormal[c]) == 0) continue;
     const glm::dvec3 n = glm::cross(positions[used[b]] - positions[used[a]], positions[used[c]] - positions[used[a]]);
-    for (std::uint32_t v : {a, b, c}) faceSum[v] += n;
+    for (std::uint32_t v : {a, b, c})
+      if (faceNormal[v]) faceSum[v] += n;
   }
   IsoMesh mesh;
   mesh.indices = std::move(indices);

@@ -28,6 +28,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -77,10 +78,11 @@ void marchTetrahedron(const std::array<TetCorner, 4>& corners, double isovalue, 
 // to the next call (a caller that assembles every frame).
 struct AssemblyScratch {
   std::vector<std::uint32_t> remap, used;
+  std::vector<std::uint8_t> faceNormal;  // per used vertex: it has no gradient
   std::vector<glm::dvec3> faceSum;
 };
 IsoMesh assembleIsoMesh(std::vector<std::uint32_t> indices, std::vector<DiamondId> diamonds,
-                        const std::vector<glm::dvec3>& positions, const std::vector<glm::dvec3>& normals,
+                        std::span<const glm::dvec3> positions, std::span<const glm::dvec3> normals,
                         AssemblyScratch* scratch = nullptr);
 
 class IsoMeshBuilder {

@@ -137,5 +137,30 @@ TEST(MarchingTetrahedra, AnIsovalueOutsideTheDataRangeGivesNoSurface) {
   EXPECT_EQ(extractFull(v, -5.0).triangleCount(), 0u);
 }
 
+TEST(MarchingTetrahedra, AssemblyGivesVerticesWithoutAGradientTheirTrianglesAreaWeightedNormal) {
+  // Store vertices 0..5: 1 is never used; 0, 3 and 4 have no gradient, 2 and 5 have one.
+  const std::vector<glm::dvec3> positions{{0, 0, 0}, {9, 9, 9}, {1, 0, 0}, {0, 2, 0}, {0, 0, 3}, {5, 5, 5}};
+  const std::vector<glm::dvec3> normals{{0, 0, 0}, {0, 0, 0}, {1, 0, 0}, {0, 0, 0}, {0, 0, 0}, {0, 1, 0}};
+  // Triangle (2, 3, 0): cross((-1,2,0), (-1,0,0)) = (0,0,2), its first vertex has a gradient;
+  // triangle (0, 4, 2): cross((0,0,3), (1,0,0)) = (0,3,0); triangle (2, 5, 5) has no area and
+  // none of its vertices needs it.
+  const IsoMesh mesh = assembleIsoMesh({2, 3, 0, 0, 4, 2, 2, 5, 5}, {7, 8, 9}, positions, normals);
+  ASSERT_EQ(mesh.positions.size(), 5u);  // in first use: 2, 3, 0, 4, 5
+  EXPECT_EQ(mesh.indices, (std::vector<std::uint32_t>{0, 1, 2, 2, 3, 0, 0, 4, 4}));
+  EXPECT_EQ(mesh.triangleDiamond, (std::vector<DiamondId>{7, 8, 9}));
+  EXPECT_EQ(mesh.positions[3], glm::vec3(0, 0, 3));
+  EXPECT_EQ(mesh.normals[0], glm::vec3(1, 0, 0));  // its gradient
+  EXPECT_EQ(mesh.normals[1], glm::vec3(0, 0, 1));  // (0, 0, 2) / 2
+  EXPECT_EQ(mesh.normals[2], glm::vec3(0.0f, static_cast<float>(3.0 / std::sqrt(13.0)),
+                                       static_cast<float>(2.0 / std::sqrt(13.0))));  // (0, 3, 2) / |.|
+  EXPECT_EQ(mesh.normals[3], glm::vec3(0, 1, 0));                                    // (0, 3, 0) / 3
+  EXPECT_EQ(mesh.normals[4], glm::vec3(0, 1, 0));                                    // its gradient
+  // A vertex without a gradient whose triangles have no area takes +z.
+  const IsoMesh flat = assembleIsoMesh({0, 1, 1}, {1}, std::vector<glm::dvec3>{{0, 0, 0}, {1, 1, 1}},
+                                       std::vector<glm::dvec3>{{0, 0, 0}, {0, 0, 0}});
+  EXPECT_EQ(flat.normals[0], glm::vec3(0, 0, 1));
+  EXPECT_EQ(flat.normals[1], glm::vec3(0, 0, 1));
+}
+
 }  // namespace
 }  // namespace voxref::ref
