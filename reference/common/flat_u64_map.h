@@ -82,10 +82,17 @@ class FlatU64Map {
   // Sizes the table for n entries at once (at most 4n slots, 16 at least); only on an empty map.
   void reserve(std::size_t n) {
     if (size_ != 0) throw std::logic_error("FlatU64Map: reserve on a map that holds entries");
+    reset(n);
+  }
+
+  // Empties the map and sizes its table for n entries as reserve does, keeping the memory it has
+  // where that is enough (a map rebuilt every frame then allocates, and faults, only as it grows).
+  void reset(std::size_t n) {
     const std::size_t slots = std::max(kMinSlots, std::bit_ceil(2 * n));
     keys_.assign(slots, kEmptyKey);
     values_.assign(slots, V{});
     resized();
+    size_ = 0;
   }
 
   // Empties the map and gives its memory back (the table returns to 16 slots).

@@ -71,10 +71,10 @@ std::vector<std::uint64_t> ViewRefinement::Queue::ids() const {
 }
 
 void ViewRefinement::Queue::rebuild(std::vector<std::pair<double, std::uint64_t>> entries) {
-  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.second < b.second; });
+  const auto byId = [](const auto& a, const auto& b) { return a.second < b.second; };
+  if (!std::is_sorted(entries.begin(), entries.end(), byId)) std::sort(entries.begin(), entries.end(), byId);
   entries.erase(std::unique(entries.begin(), entries.end()), entries.end());
-  index_.clear();
-  index_.reserve(entries.size());
+  index_.reset(entries.size());
   for (const auto& e : entries) index_.try_emplace(e.second, Member{e.first, true});
   size_ = entries.size();
   absent_ = 0;
@@ -105,8 +105,7 @@ double ViewRefinement::priority(const GridPoint& d) const {
   const glm::dvec3 lo(box.lo[0], box.lo[1], box.lo[2]), hi(box.hi[0], box.hi[1], box.hi[2]);
   const double radius = 0.5 * glm::length(hi - lo);
   const double distance = glm::length(glm::dvec3(d[0], d[1], d[2]) - camera_.eye);
-  const double pixelsPerUnit = camera_.height / (2.0 * std::tan(camera_.fovYDegrees * 3.14159265358979323846 / 360.0));
-  return bounds_->errorOf(d) * pixelsPerUnit / std::max(distance, radius);
+  return bounds_->errorOf(d) * pixelsPerUnit_ / std::max(distance, radius);
 }
 
 void ViewRefinement::addIfLeaf(const GridPoint& c) {
@@ -137,6 +136,7 @@ RefinementStats ViewRefinement::update(const ViewCamera& camera, const Refinemen
                                        const std::function<bool(const GridPoint&)>& occluded) {
   cameraBasis(camera);  // validates
   camera_ = camera;
+  pixelsPerUnit_ = camera.height / (2.0 * std::tan(camera.fovYDegrees * 3.14159265358979323846 / 360.0));
   occluded_ = occluded;
   // New camera: every priority changes.
   for (Queue* q : {&split_, &merge_}) q->reprioritise([&](std::uint64_t id) { return priority(pointOf(id)); });

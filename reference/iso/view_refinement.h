@@ -110,6 +110,7 @@ class ViewRefinement {
   DiamondMesh mesh_;
   Queue split_{true}, merge_{false};
   ViewCamera camera_;
+  double pixelsPerUnit_ = 0.0;  // P of the camera_, at distance 1
   std::function<bool(const GridPoint&)> occluded_;
 };
 

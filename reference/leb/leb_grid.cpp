@@ -4,6 +4,7 @@
 #include <bit>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace voxref::ref {
 namespace {
@@ -127,12 +128,48 @@ DiamondPoints diamondRing(const LebGrid& g, const GridPoint& p) {
   return ring;
 }
 
+// The ring's points one level coarser, in the ring's order, without classifying the ring: with
+// L = 3 (k - 1 - s) + 3 - odd (classifyPoint),
+//   phase 2 (L = 3 (k - 1 - s)): the cube's corners are multiples of 2h, and a corner with one
+//     coordinate an odd multiple of 2h is phase 0 of scale s + 1, level L - 1 (two or three odd:
+//     L - 2, L - 3; none: coarser still, the split edge's end among them);
+//   phase 1: the centres of the two cubes beside the face, p +- h on the even axis, have three
+//     odd coordinates at scale s (phase 2, L - 1); the square's other corners are multiples of 2h;
+//   phase 0: the four face centres beside p, p +- h on one of the even axes, have two odd
+//     coordinates at scale s (phase 1, L - 1); the cube centres between them have three (L - 2).
+// tests/reference/leb/leb_grid_test.cpp checks it against the ring filtered by level, and the
+// brute-force bisection, at every point of small grids.
 DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p) {
-  const int level = classifyPoint(g, p).level;
+  const LebPointClass c = classifyPoint(g, p);
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   DiamondPoints parents;
-  if (level == 0) return parents;  // the root diamond: its ring is root corners
-  for (const GridPoint& q : diamondRing(g, p))
-    if (classifyPoint(g, q).level == level - 1) parents.push_back(q);
+  if (c.level == 0) return parents;  // the root diamond: its ring is root corners
+  const int h = 1 << c.scaleLog2;
+  if (c.phase == 2) {
+    for (int m = 0; m < 8; ++m) {
+      const GridPoint q{p[0] + ((m & 1) ? h : -h), p[1] + ((m & 2) ? h : -h), p[2] + ((m & 4) ? h : -h)};
+      int odd = 0;
+      for (int a = 0; a < 3; ++a) odd += (q[a] >> (c.scaleLog2 + 1)) & 1;
+      if (odd == 1) parents.push_back(q);
+    }
+  } else if (c.phase == 1) {
+    const int even = std::countr_zero(~c.oddAxes & 7u);
+    for (const int d : {-h, h}) {
+      GridPoint q = p;
+      q[even] += d;
+      if (g.contains(q)) parents.push_back(q);
+    }
+  } else {
+    const int odd = std::countr_zero(c.oddAxes);
+    const int u = (odd + 1) % 3, v = (odd + 2) % 3;
+    for (const auto& [du, dv] : {std::pair{-h, 0}, std::pair{0, -h}, std::pair{0, h}, std::pair{h, 0}}) {
+      GridPoint q = p;
+      q[u] += du;
+      q[v] += dv;
+      if (g.contains(q)) parents.push_back(q);
+    }
+  }
   return parents;
 }
 

@@ -84,5 +84,21 @@ TEST(FlatU64Map, KeepsTheFirstValueOfAKeyAndRefusesTheReservedKey) {
   EXPECT_EQ(m.size(), 1u);
 }
 
+TEST(FlatU64Map, ResetEmptiesTheMapForItsNextFill) {
+  // The refinement's queues rebuild their index every frame with reset: nothing of the last fill
+  // may be found after it, whether the new fill is smaller or larger.
+  FlatU64Map<std::uint32_t> m;
+  for (std::uint64_t k = 0; k < 1000; ++k) m.try_emplace(k * 7919, static_cast<std::uint32_t>(k));
+  for (const std::size_t n : {std::size_t{10}, std::size_t{5000}}) {
+    m.reset(n);
+    EXPECT_EQ(m.size(), 0u);
+    for (std::uint64_t k = 0; k < 1000; ++k) ASSERT_EQ(m.find(k * 7919), nullptr) << k;
+    for (std::uint64_t k = 0; k < n; ++k) ASSERT_TRUE(m.try_emplace(k * 31, static_cast<std::uint32_t>(k + 1)).second);
+    EXPECT_EQ(m.size(), n);
+    for (std::uint64_t k = 0; k < n; ++k) ASSERT_EQ(*m.find(k * 31), k + 1) << k;
+  }
+  EXPECT_THROW(m.reserve(4), std::logic_error);  // reserve stays for an empty map only
+}
+
 }  // namespace
 }  // namespace voxref::ref

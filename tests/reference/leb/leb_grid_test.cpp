@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -139,6 +141,30 @@ TEST_P(LebGridAgainstBisection, EveryPointButTheCornersIsTheSplitVertexOfOneDiam
 }
 
 INSTANTIATE_TEST_SUITE_P(K, LebGridAgainstBisection, ::testing::Values(1, 2, 3, 4));
+
+TEST(LebGrid, ParentsAreTheRingsPointsOneLevelCoarserInTheRingsOrder) {
+  // The definition, point by point: diamondParents computes them without classifying the ring.
+  for (int k = 1; k <= 5; ++k) {
+    const LebGrid g = makeLebGrid(k);
+    for (int z = 0; z <= g.side(); ++z)
+      for (int y = 0; y <= g.side(); ++y)
+        for (int x = 0; x <= g.side(); ++x) {
+          const GridPoint p{x, y, z};
+          if (isRootCorner(g, p)) {
+            EXPECT_THROW(diamondParents(g, p), std::invalid_argument);
+            continue;
+          }
+          const int level = classifyPoint(g, p).level;
+          std::vector<GridPoint> expected;
+          if (level > 0)
+            for (const GridPoint& q : diamondRing(g, p))
+              if (classifyPoint(g, q).level == level - 1) expected.push_back(q);
+          const DiamondPoints parents = diamondParents(g, p);
+          ASSERT_EQ(std::vector<GridPoint>(parents.begin(), parents.end()), expected)
+              << "k " << k << " point " << pointText(p);
+        }
+  }
+}
 
 TEST(LebGrid, DiamondCountsInsideTheGrid) {
   const LebGrid g = makeLebGrid(4);
