@@ -85,7 +85,7 @@ IsoMesh assembleIsoMesh(std::vector<std::uint32_t> indices, std::vector<DiamondI
   for (std::size_t v = 0; v < used.size(); ++v) {
     mesh.positions[v] = glm::vec3(positions[used[v]]);
     glm::dvec3 n = normals[used[v]];
-    if (n == glm::dvec3(0.0)) {
+    if (faceNormal[v]) {
       const double len = glm::length(faceSum[v]);
       n = len > 0.0 ? faceSum[v] / len : glm::dvec3(0.0, 0.0, 1.0);
     }

@@ -15,6 +15,19 @@ void requireInside(const LebGrid& g, const GridPoint& p) {
                                 "^3 grid");
 }
 
+// classifyPoint for a diamond's split vertex: throws std::invalid_argument for a root corner.
+LebPointClass diamondClass(const LebGrid& g, const GridPoint& p) {
+  const LebPointClass c = classifyPoint(g, p);
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  return c;
+}
+
+// Corner m (bit a set: + h on axis a, else - h) of the cube of side 2h around p.
+GridPoint cubeCorner(const GridPoint& p, int h, int m) {
+  return {p[0] + ((m & 1) ? h : -h), p[1] + ((m & 2) ? h : -h), p[2] + ((m & 4) ? h : -h)};
+}
+
 void keepInside(const LebGrid& g, DiamondPoints& points) {
   points.keepIf([&](const GridPoint& q) { return g.contains(q); });
 }
@@ -77,23 +90,19 @@ LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
 }
 
 SplitEdge splitEdge(const LebGrid& g, const GridPoint& p) {
-  const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0)
-    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  const LebPointClass c = diamondClass(g, p);
   return splitEdgeOf(p, c.scaleLog2, c.oddAxes);
 }
 
 DiamondPoints diamondRing(const LebGrid& g, const GridPoint& p) {
-  const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0)
-    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  const LebPointClass c = diamondClass(g, p);
   const int h = 1 << c.scaleLog2;
   const SplitEdge e = splitEdgeOf(p, c.scaleLog2, c.oddAxes);
   DiamondPoints ring;
   if (c.phase == 2) {
     // The other six corners of the cube of side 2h around p.
     for (int m = 0; m < 8; ++m) {
-      const GridPoint q{p[0] + ((m & 1) ? h : -h), p[1] + ((m & 2) ? h : -h), p[2] + ((m & 4) ? h : -h)};
+      const GridPoint q = cubeCorner(p, h, m);
       if (q != e.a && q != e.b) ring.push_back(q);
     }
   } else if (c.phase == 1) {
@@ -140,15 +149,13 @@ DiamondPoints diamondRing(const LebGrid& g, const GridPoint& p) {
 // tests/reference/leb/leb_grid_test.cpp checks it against the ring filtered by level, and the
 // brute-force bisection, at every point of small grids.
 DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p) {
-  const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0)
-    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  const LebPointClass c = diamondClass(g, p);
   DiamondPoints parents;
   if (c.level == 0) return parents;  // the root diamond: its ring is root corners
   const int h = 1 << c.scaleLog2;
   if (c.phase == 2) {
     for (int m = 0; m < 8; ++m) {
-      const GridPoint q{p[0] + ((m & 1) ? h : -h), p[1] + ((m & 2) ? h : -h), p[2] + ((m & 4) ? h : -h)};
+      const GridPoint q = cubeCorner(p, h, m);
       int odd = 0;
       for (int a = 0; a < 3; ++a) odd += (q[a] >> (c.scaleLog2 + 1)) & 1;
       if (odd == 1) parents.push_back(q);
@@ -174,9 +181,7 @@ DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p) {
 }
 
 DiamondPoints diamondChildren(const LebGrid& g, const GridPoint& p) {
-  const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0)
-    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  const LebPointClass c = diamondClass(g, p);
   const int h = 1 << c.scaleLog2;
   DiamondPoints children;
   if (c.phase == 2 || c.phase == 1) {
@@ -192,9 +197,7 @@ DiamondPoints diamondChildren(const LebGrid& g, const GridPoint& p) {
   } else if (c.scaleLog2 > 0) {
     // Phase 0: the centres of the eight cubes of side h around p (the next, finer scale).
     const int half = h / 2;
-    for (int m = 0; m < 8; ++m)
-      children.push_back(
-          {p[0] + ((m & 1) ? half : -half), p[1] + ((m & 2) ? half : -half), p[2] + ((m & 4) ? half : -half)});
+    for (int m = 0; m < 8; ++m) children.push_back(cubeCorner(p, half, m));
   }
   keepInside(g, children);
   return children;
