@@ -73,6 +73,7 @@ GlApi loadGlApi(const GetProcAddress& get) {
   load(get, gl.DeleteBuffers, "glDeleteBuffers");
   load(get, gl.BindBuffer, "glBindBuffer");
   load(get, gl.BufferData, "glBufferData");
+  load(get, gl.BufferSubData, "glBufferSubData");
   load(get, gl.VertexAttribPointer, "glVertexAttribPointer");
   load(get, gl.EnableVertexAttribArray, "glEnableVertexAttribArray");
   load(get, gl.DrawElements, "glDrawElements");

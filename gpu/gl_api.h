@@ -78,6 +78,7 @@ struct GlApi {
   PFNGLDELETEBUFFERSPROC DeleteBuffers = nullptr;
   PFNGLBINDBUFFERPROC BindBuffer = nullptr;
   PFNGLBUFFERDATAPROC BufferData = nullptr;
+  PFNGLBUFFERSUBDATAPROC BufferSubData = nullptr;
   PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer = nullptr;
   PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray = nullptr;
   PFNGLDRAWELEMENTSPROC DrawElements = nullptr;

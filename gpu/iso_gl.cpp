@@ -1,6 +1,7 @@
 #include "gpu/iso_gl.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -12,7 +13,8 @@
 #include "reference/iso/iso_shading.h"
 
 namespace voxref::gpu {
-namespace {
+// The renderer's parts: a named namespace, since IsoMeshRenderer::State holds them.
+namespace iso_gl_parts {
 
 // An RGBA8 colour and a DEPTH_COMPONENT32F depth renderbuffer (float depth reads back exactly).
 class IsoTarget {
@@ -36,8 +38,15 @@ class IsoTarget {
       throw GlError("the RGBA8 + DEPTH_COMPONENT32F framebuffer is incomplete (status " + std::to_string(status) + ")");
     const GLenum drawBuffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
     gl.DrawBuffers(2, drawBuffers);
-    gl.Viewport(0, 0, width, height);
     checkGl(gl, "creating the isosurface framebuffer");
+  }
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Binds the framebuffer (its draw buffers are framebuffer state) and sets the viewport to it.
+  void bind() const {
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+    gl_->Viewport(0, 0, width_, height_);
   }
 
   void read(IsoImageGl& out) const {
@@ -70,56 +79,34 @@ class IsoTarget {
   GlHandle color_, ids_, depth_, framebuffer_;
 };
 
-GlHandle buffer(const GlApi& gl, GLenum target, const void* data, std::size_t bytes) {
-  GLuint b = 0;
-  gl.GenBuffers(1, &b);
-  GlHandle h(&gl, b, [](const GlApi& g, GLuint i) { g.DeleteBuffers(1, &i); });
-  gl.BindBuffer(target, b);
-  gl.BufferData(target, static_cast<GLsizeiptr>(bytes), bytes == 0 ? nullptr : data, GL_STATIC_DRAW);
-  return h;
-}
-
-glm::mat4 mvpOf(const ref::ViewCamera& camera) {
-  return glm::mat4(ref::projectionMatrix(camera) * ref::viewMatrix(camera));
-}
-
-// The mesh in vertex buffers, drawn with the shading program (colour writes as the caller set).
-class MeshDraw {
+// A buffer object whose storage grows to fit what is written and is otherwise rewritten in place.
+class GrowingBuffer {
  public:
-  MeshDraw(Context& context, const ref::IsoMesh& mesh, std::string_view fragmentSource = shaders::kIsoMeshFrag)
-      : gl_(&context.gl()),
-        program_(context.gl(), context.info().glslNumber, shaders::kIsoMeshVert, fragmentSource, "iso_mesh.frag"),
-        vao_(context.gl()),
-        count_(static_cast<GLsizei>(mesh.indices.size())) {
-    vao_.bind();
-    positions_ = buffer(*gl_, GL_ARRAY_BUFFER, mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-    gl_->VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl_->EnableVertexAttribArray(0);
-    normals_ = buffer(*gl_, GL_ARRAY_BUFFER, mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
-    gl_->VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl_->EnableVertexAttribArray(1);
-    indices_ = buffer(*gl_, GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
-    checkGl(*gl_, "uploading the isosurface mesh");
+  GrowingBuffer(const GlApi& gl, GLenum target) : gl_(&gl), target_(target) {
+    GLuint b = 0;
+    gl.GenBuffers(1, &b);
+    handle_ = GlHandle(&gl, b, [](const GlApi& g, GLuint i) { g.DeleteBuffers(1, &i); });
   }
-  void draw(const ref::ViewCamera& camera) const {
-    program_.use();
-    const glm::mat4 mvp = mvpOf(camera);
-    gl_->UniformMatrix4fv(program_.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
-    gl_->Uniform3f(program_.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
-                   static_cast<float>(camera.eye.z));
-    gl_->Uniform1f(program_.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
-    vao_.bind();
-    if (count_ > 0) gl_->DrawElements(GL_TRIANGLES, count_, GL_UNSIGNED_INT, nullptr);
-    checkGl(*gl_, "drawing the isosurface mesh");
+  // Binds the buffer to its target (the first bind makes the object) and leaves it bound.
+  void write(const void* data, std::size_t bytes) {
+    gl_->BindBuffer(target_, handle_.id());
+    if (bytes > capacity_) {
+      capacity_ = std::max(bytes, capacity_ + capacity_ / 2);
+      gl_->BufferData(target_, static_cast<GLsizeiptr>(capacity_), nullptr, GL_DYNAMIC_DRAW);
+    }
+    if (bytes > 0) gl_->BufferSubData(target_, 0, static_cast<GLsizeiptr>(bytes), data);
   }
 
  private:
   const GlApi* gl_;
-  Program program_;
-  VertexArray vao_;
-  GLsizei count_;
-  GlHandle positions_, normals_, indices_;
+  GLenum target_;
+  GlHandle handle_;
+  std::size_t capacity_ = 0;
 };
+
+glm::mat4 mvpOf(const ref::ViewCamera& camera) {
+  return glm::mat4(ref::projectionMatrix(camera) * ref::viewMatrix(camera));
+}
 
 void clearTarget(const GlApi& gl) {
   gl.ClearDepth(1.0);
@@ -150,84 +137,125 @@ void appendBox(const QueryBox& b, std::vector<float>& out) {
       for (float x : corner(v)) out.push_back(x);
 }
 
-}  // namespace
+}  // namespace iso_gl_parts
 
-IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref::ViewCamera& camera) {
-  const GlApi& gl = context.gl();
+using namespace iso_gl_parts;
+
+// The mesh program with the mesh's vertex array (positions at 0, normals at 1, the indices), and
+// the box program with the boxes' vertex array (positions at 0), made when first needed.
+struct IsoMeshRenderer::State {
+  State(Context& c, std::string_view fragmentSource)
+      : context(c),
+        gl(c.gl()),
+        meshProgram(gl, c.info().glslNumber, shaders::kIsoMeshVert,
+                    fragmentSource.empty() ? shaders::kIsoMeshFrag : fragmentSource, "iso_mesh.frag"),
+        meshVao(gl),
+        positions(gl, GL_ARRAY_BUFFER),
+        normals(gl, GL_ARRAY_BUFFER),
+        indices(gl, GL_ELEMENT_ARRAY_BUFFER),
+        boxVao(gl),
+        boxVertices(gl, GL_ARRAY_BUFFER) {
+    // Attribute sources are vertex-array state, taken from the buffer bound at the call, and so is
+    // the element buffer's binding; the buffers keep their names when their storage grows.
+    boxVao.bind();
+    boxVertices.write(nullptr, 0);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl.EnableVertexAttribArray(0);
+    meshVao.bind();
+    positions.write(nullptr, 0);
+    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl.EnableVertexAttribArray(0);
+    normals.write(nullptr, 0);
+    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    gl.EnableVertexAttribArray(1);
+    indices.write(nullptr, 0);
+    checkGl(gl, "making the isosurface renderer");
+  }
+
+  // The target of the camera's size, made anew only when the size changes; bound.
+  const IsoTarget& targetFor(const ref::ViewCamera& camera) {
+    if (!target || target->width() != camera.width || target->height() != camera.height) {
+      target.reset();
+      target.emplace(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
+    }
+    target->bind();
+    return *target;
+  }
+
+  void drawMesh(const ref::ViewCamera& camera) const {
+    meshProgram.use();
+    const glm::mat4 mvp = mvpOf(camera);
+    gl.UniformMatrix4fv(meshProgram.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    gl.Uniform3f(meshProgram.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
+                 static_cast<float>(camera.eye.z));
+    gl.Uniform1f(meshProgram.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
+    meshVao.bind();
+    if (indexCount > 0) gl.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    checkGl(gl, "drawing the isosurface mesh");
+  }
+
+  Context& context;
+  const GlApi& gl;
+  Program meshProgram;
+  VertexArray meshVao;
+  GrowingBuffer positions, normals, indices;
+  GLsizei indexCount = 0;
+  VertexArray boxVao;
+  GrowingBuffer boxVertices;
+  std::optional<Program> boxProgram;
+  std::optional<IsoTarget> target;
+};
+
+IsoMeshRenderer::IsoMeshRenderer(Context& context, std::string_view fragmentSource)
+    : state_(std::make_unique<State>(context, fragmentSource)) {}
+
+IsoMeshRenderer::~IsoMeshRenderer() = default;
+
+void IsoMeshRenderer::load(const ref::IsoMesh& mesh) {
+  State& s = *state_;
+  s.meshVao.bind();
+  s.positions.write(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+  s.normals.write(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+  s.indices.write(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+  s.indexCount = static_cast<GLsizei>(mesh.indices.size());
+  checkGl(s.gl, "uploading the isosurface mesh");
+}
+
+IsoImageGl IsoMeshRenderer::render(const ref::ViewCamera& camera) {
+  State& s = *state_;
   ref::cameraBasis(camera);  // validates
-  IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
-  clearTarget(gl);
-  MeshDraw(context, mesh).draw(camera);
+  const IsoTarget& target = s.targetFor(camera);
+  clearTarget(s.gl);
+  s.drawMesh(camera);
   IsoImageGl out;
   target.read(out);
   return out;
 }
 
-PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {
-  ref::ViewCamera camera;
-  camera.eye = {0.0, 0.0, 3.0};
-  camera.target = {0.0, 0.0, 0.0};
-  camera.up = {0.0, 1.0, 0.0};
-  camera.fovYDegrees = 90.0;
-  camera.width = camera.height = 16;
-  camera.nearPlane = 0.5;
-  camera.farPlane = 10.0;
-  ref::IsoMesh triangle;  // far larger than the view: it covers every pixel
-  triangle.positions = {{-100.0f, -100.0f, 0.0f}, {100.0f, -100.0f, 0.0f}, {0.0f, 100.0f, 0.0f}};
-  triangle.normals.assign(3, glm::vec3(0.0f, 0.0f, 1.0f));
-  triangle.indices = {0, 1, 2};
-  // The control: the same program with the constant id of the first triangle.
-  std::string control(shaders::kIsoMeshFrag);
-  const std::string read = "uint(gl_PrimitiveID) + 1u";
-  const std::size_t at = control.find(read);
-  if (at == std::string::npos)
-    throw GlError("iso_mesh.frag no longer writes uint(gl_PrimitiveID) + 1u: the primitive-id check needs updating");
-  control.replace(at, read.size(), "1u");
-  PrimitiveIdCheck out;
-  auto draw = [&](std::string_view fragment, std::size_t& drawn, std::size_t* right) {
-    const GlApi& gl = context.gl();
-    IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
-    clearTarget(gl);
-    MeshDraw(context, triangle, fragment).draw(camera);
-    IsoImageGl image;
-    target.read(image);
-    out.pixels = image.windowDepth.size();
-    for (std::size_t i = 0; i < image.windowDepth.size(); ++i) {
-      const bool written = image.windowDepth[i] < 1.0f || image.rgba[i][3] != 0 || image.primitive[i] != 0;
-      drawn += written;
-      if (right && written && image.primitive[i] == 1) ++*right;
-    }
-  };
-  draw(shaders::kIsoMeshFrag, out.drawnWithId, &out.rightIds);
-  draw(control, out.drawnByControl, nullptr);
-  return out;
-}
-
-std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
-                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera) {
-  const GlApi& gl = context.gl();
+std::vector<std::uint32_t> IsoMeshRenderer::occlusionQueries(const std::vector<QueryBox>& boxes,
+                                                             const ref::ViewCamera& camera) {
+  State& s = *state_;
+  const GlApi& gl = s.gl;
   const ref::CameraBasis basis = ref::cameraBasis(camera);
-  IsoTarget target(gl, context.info().maxRenderbufferSize, camera.width, camera.height);
+  s.targetFor(camera);
   clearTarget(gl);
   gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  MeshDraw(context, occluder).draw(camera);
+  s.drawMesh(camera);
 
   std::vector<float> vertices;
   vertices.reserve(boxes.size() * 36 * 3);
   for (const QueryBox& b : boxes) appendBox(b, vertices);
-  VertexArray vao(gl);
-  vao.bind();
-  const GlHandle vbo = buffer(gl, GL_ARRAY_BUFFER, vertices.data(), vertices.size() * sizeof(float));
-  gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-  gl.EnableVertexAttribArray(0);
-  const Program program(gl, context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag,
-                        "occlusion_box.frag");
+  s.boxVao.bind();
+  s.boxVertices.write(vertices.data(), vertices.size() * sizeof(float));
+  if (!s.boxProgram)
+    s.boxProgram.emplace(gl, s.context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag,
+                         "occlusion_box.frag");
+  const Program& program = *s.boxProgram;
   program.use();
   const glm::mat4 mvp = mvpOf(camera);
   gl.UniformMatrix4fv(program.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
   gl.DepthMask(GL_FALSE);
   gl.DepthFunc(GL_LEQUAL);
-
   std::vector<std::uint32_t> samples(boxes.size(), kNotTested);
   std::vector<GLuint> queries(boxes.size(), 0);
   std::vector<bool> begun(boxes.size(), false);
@@ -256,6 +284,56 @@ std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMe
   checkGl(gl, "occlusion queries");
   gl.DepthMask(GL_TRUE);
   return samples;
+}
+
+IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref::ViewCamera& camera) {
+  IsoMeshRenderer renderer(context);
+  renderer.load(mesh);
+  return renderer.render(camera);
+}
+
+std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
+                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera) {
+  IsoMeshRenderer renderer(context);
+  renderer.load(occluder);
+  return renderer.occlusionQueries(boxes, camera);
+}
+
+PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {
+  ref::ViewCamera camera;
+  camera.eye = {0.0, 0.0, 3.0};
+  camera.target = {0.0, 0.0, 0.0};
+  camera.up = {0.0, 1.0, 0.0};
+  camera.fovYDegrees = 90.0;
+  camera.width = camera.height = 16;
+  camera.nearPlane = 0.5;
+  camera.farPlane = 10.0;
+  ref::IsoMesh triangle;  // far larger than the view: it covers every pixel
+  triangle.positions = {{-100.0f, -100.0f, 0.0f}, {100.0f, -100.0f, 0.0f}, {0.0f, 100.0f, 0.0f}};
+  triangle.normals.assign(3, glm::vec3(0.0f, 0.0f, 1.0f));
+  triangle.indices = {0, 1, 2};
+  // The control: the same program with the constant id of the first triangle.
+  std::string control(shaders::kIsoMeshFrag);
+  const std::string read = "uint(gl_PrimitiveID) + 1u";
+  const std::size_t at = control.find(read);
+  if (at == std::string::npos)
+    throw GlError("iso_mesh.frag no longer writes uint(gl_PrimitiveID) + 1u: the primitive-id check needs updating");
+  control.replace(at, read.size(), "1u");
+  PrimitiveIdCheck out;
+  auto draw = [&](std::string_view fragment, std::size_t& drawn, std::size_t* right) {
+    IsoMeshRenderer renderer(context, fragment);
+    renderer.load(triangle);
+    const IsoImageGl image = renderer.render(camera);
+    out.pixels = image.windowDepth.size();
+    for (std::size_t i = 0; i < image.windowDepth.size(); ++i) {
+      const bool written = image.windowDepth[i] < 1.0f || image.rgba[i][3] != 0 || image.primitive[i] != 0;
+      drawn += written;
+      if (right && written && image.primitive[i] == 1) ++*right;
+    }
+  };
+  draw(shaders::kIsoMeshFrag, out.drawnWithId, &out.rightIds);
+  draw(control, out.drawnByControl, nullptr);
+  return out;
 }
 
 }  // namespace voxref::gpu

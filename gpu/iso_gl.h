@@ -9,6 +9,8 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
+#include <string_view>
 #include <vector>
 
 #include "gpu/context.h"
@@ -25,6 +27,7 @@ struct IsoImageGl {
 };
 
 // Renders the mesh. Throws GlUnsupported when the size exceeds GL_MAX_RENDERBUFFER_SIZE.
+// (IsoMeshRenderer, below, with a renderer of its own.)
 IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref::ViewCamera& camera);
 
 // Whether fragments of the mesh program reach the framebuffer on this driver: one triangle that
@@ -53,5 +56,35 @@ struct QueryBox {
 inline constexpr std::uint32_t kNotTested = 0xffffffffu;
 std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
                                               const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera);
+
+// The renderer of a frame loop: its programs, vertex arrays, buffers and target are kept from one
+// call to the next. A loaded mesh stays in the buffers until the next load, so the frame after
+// can query against it without uploading it again; a buffer's storage grows when a mesh does not
+// fit it (glBufferData, half as much again as asked) and is otherwise rewritten in place
+// (glBufferSubData), so a loop does not have the driver allocate and clear its storage every
+// frame. Each image and each query result is the one renderIsoMeshGl and occlusionQueriesGl give
+// for the same mesh and camera (they are this class with a renderer of their own). The context
+// must outlive the renderer and be current.
+class IsoMeshRenderer {
+ public:
+  // `fragmentSource`: the mesh program's fragment shader (iso_mesh.frag; checkPrimitiveIdGl's
+  // control differs in one expression).
+  explicit IsoMeshRenderer(Context& context, std::string_view fragmentSource = {});
+  ~IsoMeshRenderer();
+  IsoMeshRenderer(const IsoMeshRenderer&) = delete;
+  IsoMeshRenderer& operator=(const IsoMeshRenderer&) = delete;
+
+  // Makes `mesh` the one that render() draws and occlusionQueries() tests against.
+  void load(const ref::IsoMesh& mesh);
+  // The loaded mesh (none: an empty image) from `camera`. Throws GlUnsupported when the size
+  // exceeds GL_MAX_RENDERBUFFER_SIZE.
+  IsoImageGl render(const ref::ViewCamera& camera);
+  // occlusionQueriesGl with the loaded mesh as occluder.
+  std::vector<std::uint32_t> occlusionQueries(const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera);
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
 
 }  // namespace voxref::gpu

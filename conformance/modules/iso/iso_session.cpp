@@ -60,7 +60,8 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
   // bit for bit, as extractIsosurface (incremental_extraction.h).
   ref::IncrementalExtraction extraction(grid, dims, &bounds, iso);
   std::unordered_map<std::uint64_t, int> visibleAt;  // diamond (linear index) -> frame it was found visible
-  ref::IsoMesh previous;
+  // Holds the mesh it drew last: the next frame's occluder (section 5: the previous frame's surface).
+  gpu::IsoMeshRenderer renderer(gl);
   bool occludersValid = false;
   std::vector<IsoFrame> frames;
   for (int f = 0; f < scene.path.frames; ++f) {
@@ -78,10 +79,10 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
 
     std::unordered_set<std::uint64_t> culled;  // diamonds (linear index) culled this frame
     auto isCulled = [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; };
-    auto queryDiamonds = [&](const ref::IsoMesh& occluder, const std::vector<ref::GridPoint>& diamonds) {
+    auto queryDiamonds = [&](const std::vector<ref::GridPoint>& diamonds) {  // against the renderer's mesh
       std::vector<gpu::QueryBox> boxes;
       for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, dims));
-      return gpu::occlusionQueriesGl(gl, occluder, boxes, fr.camera);
+      return renderer.occlusionQueries(boxes, fr.camera);
     };
     auto refineAndExtract = [&] {
       auto t = Clock::now();
@@ -111,7 +112,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
           if (it != visibleAt.end() && f - it->second < scene.retestVisibleEvery) continue;
           tested.push_back(d);
         }
-      const std::vector<std::uint32_t> samples = queryDiamonds(previous, tested);
+      const std::vector<std::uint32_t> samples = queryDiamonds(tested);  // the last frame's mesh, still loaded
       for (std::size_t i = 0; i < tested.size(); ++i) {
         const std::uint64_t id = grid.linearIndex(tested[i]);
         if (samples[i] == 0 || scene.cullEveryTested) {
@@ -134,7 +135,8 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
       std::vector<ref::GridPoint> suspects;
       for (const ref::GridPoint& d : tested)
         if (isCulled(d)) suspects.push_back(d);
-      const std::vector<std::uint32_t> samples = queryDiamonds(fr.mesh, suspects);
+      renderer.load(fr.mesh);
+      const std::vector<std::uint32_t> samples = queryDiamonds(suspects);
       for (std::size_t i = 0; i < suspects.size(); ++i)
         if (samples[i] != 0) {
           culled.erase(grid.linearIndex(suspects[i]));
@@ -149,7 +151,8 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
 
     // 4. GL image and ground truth.
     t0 = Clock::now();
-    fr.gl = gpu::renderIsoMeshGl(gl, fr.mesh, fr.camera);
+    renderer.load(fr.mesh);
+    fr.gl = renderer.render(fr.camera);
     fr.secondsGl = secondsSince(t0);
     t0 = Clock::now();
     fr.truth = fx::castMesh(fr.mesh, fr.camera, options.threads);
@@ -172,7 +175,6 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
         ++fr.culledInvisible;
       }
     }
-    previous = fr.mesh;
     occludersValid = true;
     if (!options.keepImages && !frames.empty()) {
       frames.back().mesh = {};

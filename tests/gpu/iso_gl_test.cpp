@@ -1,0 +1,99 @@
+// Tests of the isosurface renderer kept across frames (label `gl`): a renderer that loads mesh
+// after mesh, smaller and larger than the one before, gives the images and query results of a
+// renderer made for each mesh alone, so nothing of an earlier mesh survives in its buffers.
+#include "gpu/iso_gl.h"
+
+#include <gtest/gtest.h>
+
+#include "gpu/context.h"
+
+namespace voxref::gpu {
+namespace {
+
+class IsoGl : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() { context_ = createContext(Driver::Llvmpipe).release(); }
+  static void TearDownTestSuite() { delete context_; }
+  static Context* context_;
+};
+Context* IsoGl::context_ = nullptr;
+
+ref::ViewCamera camera(int width, int height) {
+  ref::ViewCamera c;
+  c.eye = {0.0, 0.0, 10.0};
+  c.target = {0.0, 0.0, 0.0};
+  c.up = {0.0, 1.0, 0.0};
+  c.fovYDegrees = 60.0;
+  c.width = width;
+  c.height = height;
+  c.nearPlane = 0.5;
+  c.farPlane = 50.0;
+  return c;
+}
+
+// `n` squares side by side along x (two triangles each), tilted in depth so that the triangles
+// overlap in depth order differently for different n, at depth z.
+ref::IsoMesh strip(int n, float z) {
+  ref::IsoMesh m;
+  for (int i = 0; i < n; ++i) {
+    const float x0 = -4.0f + 8.0f * static_cast<float>(i) / static_cast<float>(n),
+                x1 = x0 + 8.0f / static_cast<float>(n);
+    const auto base = static_cast<std::uint32_t>(m.positions.size());
+    m.positions.insert(m.positions.end(), {{x0, -2.0f, z}, {x1, -2.0f, z + 0.5f}, {x1, 2.0f, z}, {x0, 2.0f, z - 0.5f}});
+    m.normals.insert(m.normals.end(), 4, glm::vec3(0.0f, 0.0f, 1.0f));
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    m.triangleDiamond.insert(m.triangleDiamond.end(), 2, 0);
+  }
+  return m;
+}
+
+void expectSameImage(const IsoImageGl& a, const IsoImageGl& b, const std::string& what) {
+  EXPECT_EQ(a.width, b.width) << what;
+  EXPECT_EQ(a.height, b.height) << what;
+  EXPECT_EQ(a.rgba, b.rgba) << what;
+  EXPECT_EQ(a.primitive, b.primitive) << what;
+  EXPECT_EQ(a.windowDepth, b.windowDepth) << what;
+}
+
+TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
+  IsoMeshRenderer renderer(*context_);
+  // Larger, smaller (the buffers keep their storage), empty, then larger than any before (they grow);
+  // the last camera changes the target's size.
+  const ref::IsoMesh meshes[] = {strip(20, 0.0f), strip(3, 1.0f), ref::IsoMesh{}, strip(57, -1.0f)};
+  const ref::ViewCamera cameras[] = {camera(64, 48), camera(64, 48), camera(64, 48), camera(40, 30)};
+  for (std::size_t i = 0; i < 4; ++i) {
+    renderer.load(meshes[i]);
+    const IsoImageGl reused = renderer.render(cameras[i]);
+    const IsoImageGl fresh = renderIsoMeshGl(*context_, meshes[i], cameras[i]);
+    expectSameImage(reused, fresh, "mesh " + std::to_string(i));
+    // The image shows the mesh: triangles of this mesh were drawn (ids up to its count), none beyond.
+    std::uint32_t highest = 0;
+    for (std::uint32_t id : reused.primitive) highest = std::max(highest, id);
+    EXPECT_EQ(highest == 0, meshes[i].indices.empty()) << "mesh " << i;
+    EXPECT_LE(highest, meshes[i].triangleCount()) << "mesh " << i;
+  }
+}
+
+TEST_F(IsoGl, QueriesTestAgainstTheMeshLoadedLast) {
+  IsoMeshRenderer renderer(*context_);
+  const ref::ViewCamera c = camera(64, 48);
+  // Boxes behind the strip (hidden by it), in front of it, and beside it.
+  const std::vector<QueryBox> boxes = {{{-1.0, -1.0, -4.0}, {1.0, 1.0, -3.0}},
+                                       {{-1.0, -1.0, 2.0}, {1.0, 1.0, 3.0}},
+                                       {{6.0, -1.0, -4.0}, {7.0, 1.0, -3.0}}};
+  const ref::IsoMesh wall = strip(8, 0.0f), none;
+  renderer.load(wall);
+  (void)renderer.render(c);  // a frame drawn in between, as in a frame loop
+  const std::vector<std::uint32_t> behindWall = renderer.occlusionQueries(boxes, c);
+  EXPECT_EQ(behindWall, occlusionQueriesGl(*context_, wall, boxes, c));
+  EXPECT_EQ(behindWall[0], 0u);
+  EXPECT_GT(behindWall[1], 0u);
+  EXPECT_GT(behindWall[2], 0u);
+  renderer.load(none);
+  const std::vector<std::uint32_t> open = renderer.occlusionQueries(boxes, c);
+  EXPECT_EQ(open, occlusionQueriesGl(*context_, none, boxes, c));
+  EXPECT_GT(open[0], 0u);
+}
+
+}  // namespace
+}  // namespace voxref::gpu
