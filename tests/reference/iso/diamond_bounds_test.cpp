@@ -11,6 +11,7 @@
 #include "reference/common/byte_stream.h"
 #include "reference/leb/diamond_mesh.h"
 #include "tests/reference/iso/iso_test_fields.h"
+#include "tests/reference/leb/grid_points.h"
 
 namespace voxref::ref {
 namespace {
@@ -46,35 +47,29 @@ TEST(DiamondBounds, ContainTheRangeOverEveryDiamondsTetrahedra) {
   const LebGrid g = field.grid();
   const DiamondBounds b = computeDiamondBounds(g, field.values(), 2);
   int diamonds = 0;
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x) {
-        const GridPoint d{x, y, z};
-        if (isRootCorner(g, d)) continue;
-        // The diamond's tetrahedra: split its parents, take the leaves whose split vertex is d.
-        DiamondMesh mesh(g);
-        for (const GridPoint& p : diamondParents(g, d)) mesh.split(p);
-        std::vector<Tetrahedron> tets;
-        mesh.forEachLeaf([&](const Tetrahedron& t, const GridPoint& owner) {
-          if (owner == d) tets.push_back(t);
-        });
-        ASSERT_FALSE(tets.empty());
-        int lo = 1 << 30, hi = -1;
-        for (int qz = 0; qz <= g.side(); ++qz)
-          for (int qy = 0; qy <= g.side(); ++qy)
-            for (int qx = 0; qx <= g.side(); ++qx)
-              for (const Tetrahedron& t : tets)
-                if (insideTetrahedron(t, {qx, qy, qz})) {
-                  const int s = v.at(qx, qy, qz);
-                  lo = std::min(lo, s);
-                  hi = std::max(hi, s);
-                  break;
-                }
-        const std::uint64_t i = g.linearIndex(d);
-        EXPECT_LE(b.min[i], lo) << x << " " << y << " " << z;
-        EXPECT_GE(b.max[i], hi) << x << " " << y << " " << z;
-        ++diamonds;
-      }
+  for (const GridPoint& d : test_support::diamondPoints(g)) {
+    // The diamond's tetrahedra: split its parents, take the leaves whose split vertex is d.
+    DiamondMesh mesh(g);
+    for (const GridPoint& p : diamondParents(g, d)) mesh.split(p);
+    std::vector<Tetrahedron> tets;
+    mesh.forEachLeaf([&](const Tetrahedron& t, const GridPoint& owner) {
+      if (owner == d) tets.push_back(t);
+    });
+    ASSERT_FALSE(tets.empty());
+    int lo = 1 << 30, hi = -1;
+    for (const GridPoint& q : test_support::gridPoints(g))
+      for (const Tetrahedron& t : tets)
+        if (insideTetrahedron(t, q)) {
+          const int s = v.at(q[0], q[1], q[2]);
+          lo = std::min(lo, s);
+          hi = std::max(hi, s);
+          break;
+        }
+    const std::uint64_t i = g.linearIndex(d);
+    EXPECT_LE(b.min[i], lo) << pointText(d);
+    EXPECT_GE(b.max[i], hi) << pointText(d);
+    ++diamonds;
+  }
   EXPECT_EQ(diamonds, 9 * 9 * 9 - 8);
 }
 
@@ -94,13 +89,9 @@ TEST(DiamondBounds, ErrorIsZeroOnALinearFieldAndNestedOnASpike) {
   const DiamondBounds sb = computeDiamondBounds(g, sf.values());
   EXPECT_EQ(sb.errorOf({5, 9, 3}), 200.0f);
   EXPECT_EQ(sb.errorOf({8, 8, 8}), 200.0f);  // the root diamond
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x) {
-        const GridPoint d{x, y, z};
-        if (isRootCorner(g, d)) continue;
-        for (const GridPoint& c : diamondChildren(g, d)) ASSERT_GE(sb.errorOf(d), sb.errorOf(c));
-      }
+  for (const GridPoint& d : test_support::diamondPoints(g)) {
+    for (const GridPoint& c : diamondChildren(g, d)) ASSERT_GE(sb.errorOf(d), sb.errorOf(c));
+  }
 }
 
 TEST(DiamondBounds, SameForEveryThreadCount) {
@@ -123,26 +114,22 @@ TEST(DiamondBox, IsTheBoxOfTheSplitVertexItsEdgeAndItsRing) {
   // The closed form (p +- h clipped to the grid) against the box of the vertices themselves.
   for (int k = 1; k <= 4; ++k) {
     const LebGrid g = makeLebGrid(k);
-    for (int z = 0; z <= g.side(); ++z)
-      for (int y = 0; y <= g.side(); ++y)
-        for (int x = 0; x <= g.side(); ++x) {
-          const GridPoint p{x, y, z};
-          if (classifyPoint(g, p).level < 0) continue;
-          const SplitEdge e = splitEdge(g, p);
-          GridBox want{p, p};
-          const DiamondPoints ring = diamondRing(g, p);
-          std::vector<GridPoint> vertices(ring.begin(), ring.end());
-          vertices.push_back(e.a);
-          vertices.push_back(e.b);
-          for (const GridPoint& q : vertices)
-            for (int a = 0; a < 3; ++a) {
-              want.lo[a] = std::min(want.lo[a], q[a]);
-              want.hi[a] = std::max(want.hi[a], q[a]);
-            }
-          const GridBox got = diamondBox(g, p);
-          ASSERT_EQ(got.lo, want.lo) << "k " << k << " point " << pointText(p);
-          ASSERT_EQ(got.hi, want.hi) << "k " << k << " point " << pointText(p);
+    for (const GridPoint& p : test_support::diamondPoints(g)) {
+      const SplitEdge e = splitEdge(g, p);
+      GridBox want{p, p};
+      const DiamondPoints ring = diamondRing(g, p);
+      std::vector<GridPoint> vertices(ring.begin(), ring.end());
+      vertices.push_back(e.a);
+      vertices.push_back(e.b);
+      for (const GridPoint& q : vertices)
+        for (int a = 0; a < 3; ++a) {
+          want.lo[a] = std::min(want.lo[a], q[a]);
+          want.hi[a] = std::max(want.hi[a], q[a]);
         }
+      const GridBox got = diamondBox(g, p);
+      ASSERT_EQ(got.lo, want.lo) << "k " << k << " point " << pointText(p);
+      ASSERT_EQ(got.hi, want.hi) << "k " << k << " point " << pointText(p);
+    }
   }
   EXPECT_THROW(diamondBox(makeLebGrid(2), GridPoint{0, 0, 4}), std::invalid_argument);
 }

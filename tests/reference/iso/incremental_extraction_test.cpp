@@ -14,6 +14,7 @@
 #include "reference/leb/leb_stream.h"
 #include "tests/reference/iso/iso_mesh_checks.h"
 #include "tests/reference/iso/iso_test_fields.h"
+#include "tests/reference/leb/grid_points.h"
 
 namespace voxref::ref {
 namespace {
@@ -85,19 +86,13 @@ TEST(IncrementalExtraction, EqualsTheFullExtractionWhenEveryDiamondIsSplitAndMer
   const Volume<std::uint16_t> v = steppedBalls({9, 8, 7});
   DenseGridField field = test_support::denseField(v);
   const LebGrid g = field.grid();
-  DiamondMesh mesh(g);
+  DiamondMesh mesh = test_support::fullyRefined(g);
   IncrementalExtraction inc(g, v.dims(), nullptr, 700.0);
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x)
-        if (!isRootCorner(g, {x, y, z})) mesh.split({x, y, z});
   expectSame(inc, mesh, field, nullptr, 700.0, "fully split");
   // Merge from the finest diamonds up until none is split.
   while (mesh.splitCount() > 0) {
-    for (int z = 0; z <= g.side(); ++z)
-      for (int y = 0; y <= g.side(); ++y)
-        for (int x = 0; x <= g.side(); ++x)
-          if (mesh.canMerge({x, y, z})) mesh.merge({x, y, z});
+    for (const GridPoint& p : test_support::gridPoints(g))
+      if (mesh.canMerge(p)) mesh.merge(p);
     expectSame(inc, mesh, field, nullptr, 700.0, std::to_string(mesh.splitCount()) + " split");
     if (::testing::Test::HasFatalFailure()) return;
   }

@@ -10,24 +10,17 @@
 #include "reference/iso/extraction.h"
 #include "tests/reference/iso/iso_mesh_checks.h"
 #include "tests/reference/iso/iso_test_fields.h"
+#include "tests/reference/leb/grid_points.h"
 
 namespace voxref::ref {
 namespace {
 
 using test_support::ballVolume;
 using test_support::denseField;
+using test_support::fullyRefined;
 using test_support::hasRepeatedIndex;
 using test_support::unmatchedDirectedEdges;
 using test_support::volumeOf;
-
-DiamondMesh fullyRefined(const LebGrid& g) {
-  DiamondMesh mesh(g);
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x)
-        if (!isRootCorner(g, {x, y, z})) mesh.split({x, y, z});
-  return mesh;
-}
 
 IsoMesh extractFull(const Volume<std::uint16_t>& v, double iso) {
   DenseGridField field = denseField(v);

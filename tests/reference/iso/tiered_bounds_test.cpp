@@ -13,6 +13,7 @@
 #include "reference/leb/leb_stream.h"
 #include "tests/reference/iso/iso_mesh_checks.h"
 #include "tests/reference/iso/iso_test_fields.h"
+#include "tests/reference/leb/grid_points.h"
 
 namespace voxref::ref {
 namespace {
@@ -31,20 +32,16 @@ void expectSameAsTheFullTable(const Volume<std::uint16_t>& v, int threads) {
   const DiamondBounds full = computeDiamondBounds(g, field.values());
   const CoarseDiamondBounds coarse = computeCoarseDiamondBounds(g, field.values(), threads);
   const TieredDiamondBounds tiered(coarse, field, 64);  // a small memo: entries are evicted and recomputed
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x) {
-        const GridPoint p{x, y, z};
-        if (isRootCorner(g, p)) continue;
-        const std::uint64_t i = g.linearIndex(p);
-        const DiamondRange r = tiered.rangeOf(p);
-        ASSERT_EQ(r.min, full.min[i]) << "k " << g.k << " point " << pointText(p);
-        ASSERT_EQ(r.max, full.max[i]) << "k " << g.k << " point " << pointText(p);
-        ASSERT_EQ(r.error, full.error[i]) << "k " << g.k << " point " << pointText(p);
-        ASSERT_EQ(tiered.errorOf(p), full.errorOf(p));
-        for (const double iso : {r.min - 0.5, r.min + 0.0, r.max + 0.0, r.max + 0.5})
-          ASSERT_EQ(tiered.mayContain(p, iso), full.mayContain(p, iso));
-      }
+  for (const GridPoint& p : test_support::diamondPoints(g)) {
+    const std::uint64_t i = g.linearIndex(p);
+    const DiamondRange r = tiered.rangeOf(p);
+    ASSERT_EQ(r.min, full.min[i]) << "k " << g.k << " point " << pointText(p);
+    ASSERT_EQ(r.max, full.max[i]) << "k " << g.k << " point " << pointText(p);
+    ASSERT_EQ(r.error, full.error[i]) << "k " << g.k << " point " << pointText(p);
+    ASSERT_EQ(tiered.errorOf(p), full.errorOf(p));
+    for (const double iso : {r.min - 0.5, r.min + 0.0, r.max + 0.0, r.max + 0.5})
+      ASSERT_EQ(tiered.mayContain(p, iso), full.mayContain(p, iso));
+  }
 }
 
 TEST(TieredBounds, EqualTheFullTableAtEveryDiamond) {

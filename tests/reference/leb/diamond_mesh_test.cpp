@@ -1,6 +1,7 @@
 #include "reference/leb/diamond_mesh.h"
 
 #include "tests/reference/leb/conforming_mesh.h"
+#include "tests/reference/leb/grid_points.h"
 
 #include <algorithm>
 #include <map>
@@ -88,11 +89,7 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
 
 TEST(DiamondMesh, FullRefinementHasSixTetrahedraPerCell) {
   const LebGrid g = makeLebGrid(2);
-  DiamondMesh mesh(g);
-  for (int z = 0; z <= 4; ++z)
-    for (int y = 0; y <= 4; ++y)
-      for (int x = 0; x <= 4; ++x)
-        if (!isRootCorner(g, {x, y, z})) mesh.split({x, y, z});
+  const DiamondMesh mesh = test_support::fullyRefined(g);
   EXPECT_EQ(mesh.splitCount(), g.pointCount() - 8);
   EXPECT_EQ(mesh.leafTetrahedra().size(), 6u * 64u);
   expectConforming(mesh);

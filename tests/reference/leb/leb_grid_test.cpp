@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/reference/leb/grid_points.h"
+
 namespace voxref::ref {
 namespace {
 
@@ -107,35 +109,32 @@ TEST_P(LebGridAgainstBisection, EveryPointButTheCornersIsTheSplitVertexOfOneDiam
   const LebGrid g = makeLebGrid(GetParam());
   const BruteForce brute(g.k);
   int points = 0;
-  for (int z = 0; z <= g.side(); ++z)
-    for (int y = 0; y <= g.side(); ++y)
-      for (int x = 0; x <= g.side(); ++x) {
-        const GridPoint p{x, y, z};
-        const auto it = brute.diamonds.find(p);
-        if (isRootCorner(g, p)) {
-          EXPECT_EQ(it, brute.diamonds.end());
-          EXPECT_EQ(classifyPoint(g, p).level, -1);
-          continue;
-        }
-        ++points;
-        ASSERT_NE(it, brute.diamonds.end()) << x << " " << y << " " << z << " is never inserted";
-        const BruteDiamond& d = it->second;
-        ASSERT_EQ(d.splitEdges.size(), 1u) << "one split edge per split vertex (conforming bisection)";
-        ASSERT_EQ(d.depths.size(), 1u);
-        const SplitEdge e = splitEdge(g, p);
-        EXPECT_EQ(sorted(e.a, e.b), *d.splitEdges.begin()) << x << " " << y << " " << z;
-        const LebPointClass c = classifyPoint(g, p);
-        EXPECT_EQ(c.level, *d.depths.begin()) << x << " " << y << " " << z;
-        EXPECT_LT(classifyPoint(g, e.a).level, c.level);
-        EXPECT_LT(classifyPoint(g, e.b).level, c.level);
-        EXPECT_EQ(asSet(diamondRing(g, p)), d.ring) << x << " " << y << " " << z;
-        EXPECT_EQ(asSet(diamondParents(g, p)), d.parents) << x << " " << y << " " << z;
-        EXPECT_EQ(asSet(diamondChildren(g, p)), d.children) << x << " " << y << " " << z;
-        // Full diamonds inside the grid: 6, 4 and 8 tetrahedra for phases 2, 1, 0.
-        if (d.ring.size() == (c.phase == 2 ? 6u : c.phase == 1 ? 4u : 8u)) {
-          EXPECT_EQ(d.tets, c.phase == 2 ? 6 : c.phase == 1 ? 4 : 8);
-        }
-      }
+  for (const GridPoint& p : test_support::gridPoints(g)) {
+    const auto it = brute.diamonds.find(p);
+    if (isRootCorner(g, p)) {
+      EXPECT_EQ(it, brute.diamonds.end());
+      EXPECT_EQ(classifyPoint(g, p).level, -1);
+      continue;
+    }
+    ++points;
+    ASSERT_NE(it, brute.diamonds.end()) << pointText(p) << " is never inserted";
+    const BruteDiamond& d = it->second;
+    ASSERT_EQ(d.splitEdges.size(), 1u) << "one split edge per split vertex (conforming bisection)";
+    ASSERT_EQ(d.depths.size(), 1u);
+    const SplitEdge e = splitEdge(g, p);
+    EXPECT_EQ(sorted(e.a, e.b), *d.splitEdges.begin()) << pointText(p);
+    const LebPointClass c = classifyPoint(g, p);
+    EXPECT_EQ(c.level, *d.depths.begin()) << pointText(p);
+    EXPECT_LT(classifyPoint(g, e.a).level, c.level);
+    EXPECT_LT(classifyPoint(g, e.b).level, c.level);
+    EXPECT_EQ(asSet(diamondRing(g, p)), d.ring) << pointText(p);
+    EXPECT_EQ(asSet(diamondParents(g, p)), d.parents) << pointText(p);
+    EXPECT_EQ(asSet(diamondChildren(g, p)), d.children) << pointText(p);
+    // Full diamonds inside the grid: 6, 4 and 8 tetrahedra for phases 2, 1, 0.
+    if (d.ring.size() == (c.phase == 2 ? 6u : c.phase == 1 ? 4u : 8u)) {
+      EXPECT_EQ(d.tets, c.phase == 2 ? 6 : c.phase == 1 ? 4 : 8);
+    }
+  }
   EXPECT_EQ(points, static_cast<int>(g.pointCount()) - 8);
   EXPECT_EQ(brute.diamonds.size(), g.pointCount() - 8);
 }
@@ -146,23 +145,20 @@ TEST(LebGrid, ParentsAreTheRingsPointsOneLevelCoarserInTheRingsOrder) {
   // The definition, point by point: diamondParents computes them without classifying the ring.
   for (int k = 1; k <= 5; ++k) {
     const LebGrid g = makeLebGrid(k);
-    for (int z = 0; z <= g.side(); ++z)
-      for (int y = 0; y <= g.side(); ++y)
-        for (int x = 0; x <= g.side(); ++x) {
-          const GridPoint p{x, y, z};
-          if (isRootCorner(g, p)) {
-            EXPECT_THROW(diamondParents(g, p), std::invalid_argument);
-            continue;
-          }
-          const int level = classifyPoint(g, p).level;
-          std::vector<GridPoint> expected;
-          if (level > 0)
-            for (const GridPoint& q : diamondRing(g, p))
-              if (classifyPoint(g, q).level == level - 1) expected.push_back(q);
-          const DiamondPoints parents = diamondParents(g, p);
-          ASSERT_EQ(std::vector<GridPoint>(parents.begin(), parents.end()), expected)
-              << "k " << k << " point " << pointText(p);
-        }
+    for (const GridPoint& p : test_support::gridPoints(g)) {
+      if (isRootCorner(g, p)) {
+        EXPECT_THROW(diamondParents(g, p), std::invalid_argument);
+        continue;
+      }
+      const int level = classifyPoint(g, p).level;
+      std::vector<GridPoint> expected;
+      if (level > 0)
+        for (const GridPoint& q : diamondRing(g, p))
+          if (classifyPoint(g, q).level == level - 1) expected.push_back(q);
+      const DiamondPoints parents = diamondParents(g, p);
+      ASSERT_EQ(std::vector<GridPoint>(parents.begin(), parents.end()), expected)
+          << "k " << k << " point " << pointText(p);
+    }
   }
 }
 
