@@ -86,8 +86,13 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
     for (std::size_t k = 0; k < comps; ++k) have.v[first + k] = pred[first + k];
     if (inside) {
       const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
-      PageCache::Page deltas = cache_.find(key);  // the hit path builds no std::function
-      if (!deltas) deltas = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+      // The hit path builds no std::function and takes no share of the page.
+      const std::vector<std::int16_t>* deltas = cache_.peek(key);
+      PageCache::Page decoded;  // a page larger than the budget lives only here
+      if (!deltas) {
+        decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+        deltas = decoded.get();
+      }
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;
       for (std::size_t k = 0; k < comps; ++k)
         have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);

@@ -4,13 +4,26 @@
 
 namespace voxref::ref {
 
-PageCache::Page PageCache::find(std::uint64_t key) {
+const std::vector<std::int16_t>* PageCache::peek(std::uint64_t key) {
+  if (!lru_.empty()) {
+    if (lru_.front().key == key) {  // already the most recent
+      ++stats_.hits;
+      return lru_.front().page.get();
+    }
+    if (const auto second = std::next(lru_.begin()); second != lru_.end() && second->key == key) {
+      ++stats_.hits;
+      lru_.splice(lru_.begin(), lru_, second);
+      return second->page.get();
+    }
+  }
   const auto it = index_.find(key);
   if (it == index_.end()) return nullptr;
   ++stats_.hits;
   lru_.splice(lru_.begin(), lru_, it->second);
-  return it->second->page;
+  return it->second->page.get();
 }
+
+PageCache::Page PageCache::find(std::uint64_t key) { return peek(key) ? lru_.front().page : nullptr; }
 
 PageCache::Page PageCache::get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode) {
   if (Page hit = find(key)) return hit;

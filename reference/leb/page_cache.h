@@ -30,6 +30,10 @@ class PageCache {
   Page get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode);
   // The page under `key` if it is cached (a hit, made the most recent), else null (nothing counted).
   Page find(std::uint64_t key);
+  // find() without taking a share of the page: valid until the next get(), which may evict it.
+  // The two most recent pages are found without the index (a reader alternates between a point's
+  // data page and its gradient page).
+  const std::vector<std::int16_t>* peek(std::uint64_t key);
   const Stats& stats() const { return stats_; }
   std::size_t budget() const { return budget_; }
 

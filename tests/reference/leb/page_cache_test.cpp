@@ -51,6 +51,32 @@ TEST(PageCache, FindIsAHitOrNothing) {
   EXPECT_EQ(cache.stats().misses, 3u);
 }
 
+TEST(PageCache, PeekMakesWhatItFindsTheMostRecentAsFindDoes) {
+  // peek finds the most recent page and the second most recent without the index, and older ones
+  // through it; each is a hit that leaves the page the most recent, as find's are.
+  PageCache cache(2 * 200);  // two pages of 100 values
+  int decodes = 0;
+  cache.get(1, page(100, &decodes));
+  cache.get(2, page(100, &decodes));  // recent first: 2 1
+  EXPECT_EQ(cache.peek(9), nullptr);
+  const std::vector<std::int16_t>* two = cache.peek(2);  // the most recent
+  ASSERT_NE(two, nullptr);
+  EXPECT_EQ(two, cache.find(2).get());
+  ASSERT_NE(cache.peek(1), nullptr);  // the second: 1 2
+  cache.get(3, page(100, &decodes));  // evicts 2: 3 1
+  EXPECT_EQ(cache.find(2), nullptr);
+  ASSERT_NE(cache.find(1), nullptr);  // 1 3
+  cache.get(4, page(100, &decodes));  // evicts 3: 4 1
+  cache.get(5, page(100, &decodes));  // evicts 1: 5 4
+  ASSERT_NE(cache.peek(4), nullptr);  // the second: 4 5
+  cache.get(6, page(100, &decodes));  // evicts 5
+  EXPECT_EQ(cache.find(5), nullptr);
+  EXPECT_NE(cache.find(4), nullptr);
+  EXPECT_EQ(cache.stats().hits, 6u);  // peek 2, find 2, peek 1, find 1, peek 4, find 4
+  EXPECT_EQ(cache.stats().misses, 6u);
+  EXPECT_EQ(decodes, 6);
+}
+
 TEST(PageCache, APageLargerThanTheBudgetIsHandedOutButNotKept) {
   PageCache cache(100);
   int decodes = 0;
