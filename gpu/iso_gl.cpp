@@ -155,19 +155,19 @@ struct IsoMeshRenderer::State {
         indices(gl, GL_ELEMENT_ARRAY_BUFFER),
         boxVao(gl),
         boxVertices(gl, GL_ARRAY_BUFFER) {
-    // Attribute sources are vertex-array state, taken from the buffer bound at the call, and so is
-    // the element buffer's binding; the buffers keep their names when their storage grows.
+    // Attribute `index` of the bound vertex array reads vec3s from `b`. An attribute's source is
+    // vertex-array state, taken from the buffer bound at the call, and so is the element buffer's
+    // binding; the buffers keep their names when their storage grows.
+    auto attach = [&](GrowingBuffer& b, GLuint index) {
+      b.write(nullptr, 0);
+      gl.VertexAttribPointer(index, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+      gl.EnableVertexAttribArray(index);
+    };
     boxVao.bind();
-    boxVertices.write(nullptr, 0);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.EnableVertexAttribArray(0);
+    attach(boxVertices, 0);
     meshVao.bind();
-    positions.write(nullptr, 0);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.EnableVertexAttribArray(0);
-    normals.write(nullptr, 0);
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.EnableVertexAttribArray(1);
+    attach(positions, 0);
+    attach(normals, 1);
     indices.write(nullptr, 0);
     checkGl(gl, "making the isosurface renderer");
   }
