@@ -233,7 +233,6 @@ enum class AccessPattern { Uniform, Bricks };
 // last.
 RandomAccess randomAccess(const std::shared_ptr<const ref::LebStream>& s, int threads, std::size_t budget, int points,
                           AccessPattern pattern = AccessPattern::Uniform) {
-  using Clock = std::chrono::steady_clock;
   std::vector<std::uint64_t> misses(static_cast<std::size_t>(threads), 0), done(static_cast<std::size_t>(threads), 0);
   std::vector<Clock::time_point> began(static_cast<std::size_t>(threads)), ended(static_cast<std::size_t>(threads));
   std::barrier ready(threads);

@@ -59,7 +59,9 @@ TEST(GaussianBuckyball, SlicesSampledFastEqualTheWholeSum) {
           bright += got > 128 ? 1 : 0;
         }
     }
-    if (d[0] > 1) EXPECT_GT(bright, 0);
+    if (d[0] > 1) {
+      EXPECT_GT(bright, 0);
+    }
   }
 }
 

@@ -59,7 +59,9 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
     std::uint64_t previous = 0;
     std::size_t count = 0;
     mesh.forEachLeafVisit([&](const LeafVisit& v) {
-      if (count++ > 0) EXPECT_LT(previous, v.path);
+      if (count++ > 0) {
+        EXPECT_LT(previous, v.path);
+      }
       previous = v.path;
       const auto [it, added] = named.try_emplace(v.path, v.t);
       EXPECT_EQ(it->second.v, v.t.v) << "path " << v.path << " named two tetrahedra";
@@ -69,15 +71,18 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
         EXPECT_EQ(m, v.splitVertex);
         EXPECT_FALSE(mesh.isSplit(m));
       }
-      if (v.creator[0] >= 0) EXPECT_TRUE(mesh.isSplit(v.creator));
+      if (v.creator[0] >= 0) {
+        EXPECT_TRUE(mesh.isSplit(v.creator));
+      }
       const LeafVisit again = mesh.leafOnPath(v.path);
       EXPECT_EQ(again.path, v.path);
       EXPECT_EQ(again.t.v, v.t.v);
       EXPECT_EQ(again.creator, v.creator);
       // A path two halves further down the second half's side leads back to this leaf.
       const std::uint64_t deeper = halfLeafPath(halfLeafPath(v.path, 1), 1);
-      if ((deeper & kLeafPathDepthMask) <= static_cast<std::uint64_t>(g.levelCount()))
+      if ((deeper & kLeafPathDepthMask) <= static_cast<std::uint64_t>(g.levelCount())) {
         EXPECT_EQ(mesh.leafOnPath(deeper).path, v.path);
+      }
     });
     EXPECT_EQ(count, mesh.leafTetrahedra().size());
     if (::testing::Test::HasFailure()) return;
