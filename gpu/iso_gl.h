@@ -60,11 +60,11 @@ std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMe
 // The renderer of a frame loop: its programs, vertex arrays, buffers and target are kept from one
 // call to the next. A loaded mesh stays in the buffers until the next load, so the frame after
 // can query against it without uploading it again; a buffer's storage grows when a mesh does not
-// fit it (glBufferData, half as much again as asked) and is otherwise rewritten in place
-// (glBufferSubData), so a loop does not have the driver allocate and clear its storage every
-// frame. Each image and each query result is the one renderIsoMeshGl and occlusionQueriesGl give
-// for the same mesh and camera (they are this class with a renderer of their own). The context
-// must outlive the renderer and be current.
+// fit it (glBufferData, to the size needed or to one and a half times its old size, the larger)
+// and is otherwise rewritten in place (glBufferSubData), so a loop does not have the driver
+// allocate and clear its storage every frame. Each image and each query result is the one
+// renderIsoMeshGl and occlusionQueriesGl give for the same mesh and camera (they are this class
+// with a renderer of their own). The context must outlive the renderer and be current.
 class IsoMeshRenderer {
  public:
   // `fragmentSource`: the mesh program's fragment shader (iso_mesh.frag; checkPrimitiveIdGl's
