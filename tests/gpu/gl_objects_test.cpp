@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gpu/llvmpipe_suite.h"
+
 #include "gpu/context.h"
 #include "gpu/gl_error.h"
 #include "gpu/iso_gl.h"
@@ -13,13 +15,7 @@
 namespace voxref::gpu {
 namespace {
 
-class GlObjects : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = createContext(Driver::Llvmpipe).release(); }
-  static void TearDownTestSuite() { delete context_; }
-  static Context* context_;
-};
-Context* GlObjects::context_ = nullptr;
+class GlObjects : public LlvmpipeSuite {};
 
 TEST_F(GlObjects, ContextIsGl45CoreOnLlvmpipe) {
   EXPECT_EQ(context_->info().renderer.rfind("llvmpipe", 0), 0u);

@@ -5,18 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gpu/llvmpipe_suite.h"
+
 #include "gpu/context.h"
 
 namespace voxref::gpu {
 namespace {
 
-class IsoGl : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = createContext(Driver::Llvmpipe).release(); }
-  static void TearDownTestSuite() { delete context_; }
-  static Context* context_;
-};
-Context* IsoGl::context_ = nullptr;
+class IsoGl : public LlvmpipeSuite {};
 
 ref::ViewCamera camera(int width, int height) {
   ref::ViewCamera c;

@@ -8,18 +8,14 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/gpu/llvmpipe_suite.h"
+
 #include "gpu/gl_error.h"
 
 namespace voxref::gpu {
 namespace {
 
-class ShaderOverrides : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() { context_ = createContext(Driver::Llvmpipe).release(); }
-  static void TearDownTestSuite() { delete context_; }
-  static Context* context_;
-};
-Context* ShaderOverrides::context_ = nullptr;
+class ShaderOverrides : public LlvmpipeSuite {};
 
 TEST(ShaderStages, EveryUniformOfEveryBuiltInShaderIsDocumented) {
   ASSERT_FALSE(commonInterface().empty());
