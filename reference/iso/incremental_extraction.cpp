@@ -122,7 +122,7 @@ GridPoint IncrementalExtraction::creatorOf(const Leaf& l) {
 GridPoint IncrementalExtraction::splitVertexOf(const Leaf& l) {
   const auto [i, j] = kEdges[(l.bits >> kEdgeShift) & 7];
   const auto &a = l.v[static_cast<std::size_t>(i)], &b = l.v[static_cast<std::size_t>(j)];
-  return {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+  return {(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1};  // even sums: the leaf has a split vertex
 }
 
 // extractIsosurface's step for one leaf: skipped when its diamond's range excludes the isovalue,
@@ -131,14 +131,10 @@ void IncrementalExtraction::add(const LeafVisit& leaf, GridField& field) {
   Leaf kept;
   for (std::size_t k = 0; k < 4; ++k) kept.v[k] = narrow(leaf.t.v[k]);
   kept.bits = leaf.path;
-  if (leaf.creator[0] >= 0) {
-    const auto slot = static_cast<std::uint64_t>(std::find(leaf.t.v.begin(), leaf.t.v.end(), leaf.creator) -
-                                                 leaf.t.v.begin());  // a corner of every half
-    kept.bits |= kHasCreator | slot << kCreatorSlotShift;
-  }
+  if (leaf.creatorSlot >= 0)
+    kept.bits |= kHasCreator | static_cast<std::uint64_t>(leaf.creatorSlot) << kCreatorSlotShift;
   if (leaf.hasSplitVertex) {
-    const auto e =
-        static_cast<std::uint64_t>(std::find(kEdges.begin(), kEdges.end(), longestEdge(leaf.t)) - kEdges.begin());
+    const auto e = static_cast<std::uint64_t>(std::find(kEdges.begin(), kEdges.end(), leaf.longest) - kEdges.begin());
     kept.bits |= kHasSplitVertex | e << kEdgeShift;
   }
   const GridPoint& diamond = leaf.diamond();
@@ -215,7 +211,7 @@ void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
   for (std::size_t i = 0; i < leaves_.size();) {
     const Leaf& old = leaves_[i];
     const std::uint64_t path = pathOf(old);
-    if ((old.bits & kHasCreator) && !mesh.isSplit(creatorOf(old))) {
+    if ((old.bits & kHasCreator) && !mesh.isSplitPoint(creatorOf(old))) {
       // Its parent was merged: the leaf above it on its path replaces it and every old leaf below
       // that one (they follow it in path order).
       const LeafVisit above = mesh.leafOnPath(path);
@@ -230,10 +226,11 @@ void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
     }
     if (old.bits & kHasSplitVertex) {
       const GridPoint m = splitVertexOf(old);
-      if (mesh.isSplit(m)) {  // split: new leaves below it
+      if (mesh.isSplitPoint(m)) {  // split: new leaves below it
         Tetrahedron t;
         for (std::size_t k = 0; k < 4; ++k) t.v[k] = widen(old.v[k]);
-        const LeafVisit start{t, creatorOf(old), path, true, m};
+        const int slot = (old.bits & kHasCreator) ? static_cast<int>((old.bits >> kCreatorSlotShift) & 3) : -1;
+        const LeafVisit start{t, creatorOf(old), path, true, m, kEdges[(old.bits >> kEdgeShift) & 7], slot};
         forget(old);
         mesh.forEachLeafBelow(start, addLeaf);
         ++i;

@@ -31,6 +31,7 @@
 #include <span>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "reference/common/flat_u64_map.h"
@@ -133,15 +134,20 @@ void marchTetrahedron(const std::array<TetCorner, 4>& c, double isovalue, const 
   auto x = [&](int o, int i) { return store.crossing(c[static_cast<std::size_t>(o)], c[static_cast<std::size_t>(i)]); };
   auto triangle = [&](std::array<std::uint32_t, 3> tri) {
     if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return;
-    const glm::dvec3 p0 = store.position(tri[0]);
-    const glm::dvec3 n = glm::cross(store.position(tri[1]) - p0, store.position(tri[2]) - p0);
+    const glm::dvec3 p0 = store.position(tri[0]), p1 = store.position(tri[1]), p2 = store.position(tri[2]);
+    const glm::dvec3 n = glm::cross(p1 - p0, p2 - p0);
     if (glm::dot(n, outward) < 0.0) std::swap(tri[1], tri[2]);
     // Clip against x <= hi, y <= hi, z <= hi where the volume ends before the grid does. Each
-    // plane adds at most one vertex to the convex polygon: at most 6.
+    // plane adds at most one vertex to the convex polygon: at most 6. A plane with every corner of
+    // the triangle on its inner side keeps the triangle as it is, so until a plane has been walked
+    // such planes are not.
+    const glm::dvec3 highest = glm::max(p0, glm::max(p1, p2));
     std::array<std::uint32_t, 6> poly{tri[0], tri[1], tri[2]};
     std::size_t size = 3;
+    bool walked = false;
     for (int axis = 0; axis < 3; ++axis) {
-      if (clipHi[axis] >= gridSide) continue;
+      if (clipHi[axis] >= gridSide || (!walked && highest[axis] <= clipHi[axis])) continue;
+      walked = true;
       std::array<std::uint32_t, 6> next{};
       std::size_t kept = 0;
       for (std::size_t k = 0; k < size; ++k) {

@@ -88,11 +88,8 @@ LeafVisit DiamondMesh::leafOnPath(std::uint64_t path) const {
     throw std::invalid_argument("leafOnPath: " + std::to_string(path) + " is not the path of a tetrahedron");
   const int r = 5 - static_cast<int>(root);
   LeafVisit v = visitOf(rootTetrahedra(grid_)[static_cast<std::size_t>(r)], {-1, -1, -1}, rootLeafPath(r));
-  for (std::uint64_t d = 1; d <= depth && v.hasSplitVertex && isSplit(v.splitVertex); ++d) {
-    const int half = (path >> (61 - d)) & 1 ? 0 : 1;
-    const Tetrahedron t = bisectTetrahedron(v.t, longestEdge(v.t), v.splitVertex)[static_cast<std::size_t>(half)];
-    v = visitOf(t, v.splitVertex, halfLeafPath(v.path, half));
-  }
+  for (std::uint64_t d = 1; d <= depth && v.hasSplitVertex && isSplitPoint(v.splitVertex); ++d)
+    toHalf(v, (path >> (61 - d)) & 1 ? 0 : 1);
   return v;
 }
 

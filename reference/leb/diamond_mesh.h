@@ -30,6 +30,10 @@ struct LeafVisit {
   std::uint64_t path = 0;
   bool hasSplitVertex = false;
   GridPoint splitVertex{-1, -1, -1};
+  // The vertex slots (i < j) of t's longest edge (longestEdge(t)), and the slot of creator among
+  // t's corners (-1 for a root): carried, so the traversal and its callers find neither again.
+  std::pair<int, int> longest{0, 1};
+  int creatorSlot = -1;
   // The diamond a leaf belongs to (DiamondMesh::forEachLeaf).
   const GridPoint& diamond() const { return hasSplitVertex ? splitVertex : creator; }
 };
@@ -45,8 +49,9 @@ class DiamondMesh {
   explicit DiamondMesh(const LebGrid& grid);
 
   const LebGrid& grid() const { return grid_; }
-  bool isSplit(const GridPoint& d) const {
-    if (!grid_.contains(d)) return false;
+  bool isSplit(const GridPoint& d) const { return grid_.contains(d) && isSplitPoint(d); }
+  // isSplit for d a point of the grid (the traversal's split vertices and corners), unchecked.
+  bool isSplitPoint(const GridPoint& d) const {
     const std::uint64_t i = grid_.linearIndex(d);
     return (split_[i >> 6] >> (i & 63)) & 1u;
   }
@@ -129,32 +134,56 @@ inline std::uint64_t halfLeafPath(std::uint64_t parent, int half) {
   return ((parent & ~kLeafPathDepthMask) | (half == 0 ? std::uint64_t{1} << (61 - depth) : 0)) | depth;
 }
 
-// The visit of t: its split vertex, when the midpoint of its longest edge is a grid point.
+// Completes the visit v of v.t: its longest edge, and its split vertex when the midpoint of that
+// edge is a grid point (the edge's coordinate sums are then even, so halving them is exact).
+inline void completeVisit(LeafVisit& v) {
+  v.longest = longestEdge(v.t);
+  const GridPoint &a = v.t.v[static_cast<std::size_t>(v.longest.first)],
+                  &b = v.t.v[static_cast<std::size_t>(v.longest.second)];
+  v.hasSplitVertex = ((a[0] + b[0]) & 1) == 0 && ((a[1] + b[1]) & 1) == 0 && ((a[2] + b[2]) & 1) == 0;
+  v.splitVertex =
+      v.hasSplitVertex ? GridPoint{(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1} : GridPoint{-1, -1, -1};
+}
+
+// The visit of t with the creator found among its corners (-1 when creator[0] < 0 or it is none).
 inline LeafVisit visitOf(const Tetrahedron& t, const GridPoint& creator, std::uint64_t path) {
-  LeafVisit v{t, creator, path, false, {-1, -1, -1}};
-  const std::pair<int, int> e = longestEdge(t);
-  const GridPoint &a = t.v[static_cast<std::size_t>(e.first)], &b = t.v[static_cast<std::size_t>(e.second)];
-  v.hasSplitVertex = (a[0] + b[0]) % 2 == 0 && (a[1] + b[1]) % 2 == 0 && (a[2] + b[2]) % 2 == 0;
-  if (v.hasSplitVertex) v.splitVertex = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2};
+  LeafVisit v{t, creator, path};
+  for (int k = 0; k < 4 && creator[0] >= 0; ++k)
+    if (t.v[static_cast<std::size_t>(k)] == creator) v.creatorSlot = k;
+  completeVisit(v);
   return v;
+}
+
+// Makes the visit `v` of a split tetrahedron the visit of its half `half` (0 or 1), as
+// bisectTetrahedron cuts it at v.splitVertex: the split vertex takes the slot of the longest
+// edge's second endpoint in the first half and of its first endpoint in the second, and becomes
+// the creator.
+inline void toHalf(LeafVisit& v, int half) {
+  const int slot = half == 0 ? v.longest.second : v.longest.first;
+  v.t.v[static_cast<std::size_t>(slot)] = v.splitVertex;
+  v.creator = v.splitVertex;
+  v.creatorSlot = slot;
+  v.path = halfLeafPath(v.path, half);
+  completeVisit(v);
 }
 
 template <class Fn>
 void DiamondMesh::forEachLeafBelow(const LeafVisit& start, Fn&& fn) const {
   // Depth first: a split tetrahedron leaves its first half on the stack, so the stack holds at most
-  // one tetrahedron per depth below start, plus one (3k + 1 <= 31).
+  // one tetrahedron per depth below start (3k <= 30).
   std::array<LeafVisit, 3 * kMaxIndexedLebK + 2> stack;
+  // The second half of a split one is taken next without a trip through the stack.
   std::size_t size = 0;
-  stack[size++] = start;
-  while (size > 0) {
-    const LeafVisit item = stack[--size];
-    if (!item.hasSplitVertex || !isSplit(item.splitVertex)) {
+  LeafVisit item = start;
+  for (;;) {
+    if (!item.hasSplitVertex || !isSplitPoint(item.splitVertex)) {
       fn(item);
+      if (size == 0) return;
+      item = stack[--size];
       continue;
     }
-    const std::array<Tetrahedron, 2> halves = bisectTetrahedron(item.t, longestEdge(item.t), item.splitVertex);
-    for (int h = 0; h < 2; ++h)
-      stack[size++] = visitOf(halves[static_cast<std::size_t>(h)], item.splitVertex, halfLeafPath(item.path, h));
+    toHalf(stack[size++] = item, 0);
+    toHalf(item, 1);
   }
 }
 

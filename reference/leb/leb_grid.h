@@ -51,7 +51,9 @@ struct LebGrid {
   }
   int levelCount() const { return 3 * k; }
   bool contains(const GridPoint& p) const {
-    return p[0] >= 0 && p[1] >= 0 && p[2] >= 0 && p[0] <= side() && p[1] <= side() && p[2] <= side();
+    // One unsigned comparison per axis: a negative coordinate wraps above the side.
+    const auto n = static_cast<unsigned>(side());
+    return static_cast<unsigned>(p[0]) <= n && static_cast<unsigned>(p[1]) <= n && static_cast<unsigned>(p[2]) <= n;
   }
   // x + (N + 1) (y + (N + 1) z)
   std::uint64_t linearIndex(const GridPoint& p) const {

@@ -74,6 +74,13 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
       if (v.creator[0] >= 0) {
         EXPECT_TRUE(mesh.isSplit(v.creator));
       }
+      // What the traversal carries is what the corners say.
+      EXPECT_EQ(v.longest, longestEdge(v.t));
+      if (v.creatorSlot >= 0) {
+        EXPECT_EQ(v.t.v[static_cast<std::size_t>(v.creatorSlot)], v.creator);
+      } else {
+        EXPECT_LT(v.creator[0], 0);
+      }
       const LeafVisit again = mesh.leafOnPath(v.path);
       EXPECT_EQ(again.path, v.path);
       EXPECT_EQ(again.t.v, v.t.v);
@@ -90,6 +97,40 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
   EXPECT_GT(named.size(), 500u);
   EXPECT_THROW(mesh.leafOnPath(std::uint64_t{7} << 61), std::invalid_argument);  // no seventh root
   EXPECT_THROW(mesh.leafOnPath(rootLeafPath(0) | 40), std::invalid_argument);    // deeper than the grid
+}
+
+// toHalf, which the traversals use, makes the halves bisectTetrahedron makes (cut at the midpoint
+// of the longest edge found from the corners), in the same corner order, with the visit's fields
+// what visitOf finds for them: over every tetrahedron of a grid down to the finest level.
+TEST(DiamondMesh, AVisitsHalvesAreTheHalvesOfBisection) {
+  const LebGrid g = makeLebGrid(2);
+  std::vector<LeafVisit> pending;
+  const std::array<Tetrahedron, 6> roots = rootTetrahedra(g);
+  for (int r = 0; r < 6; ++r)
+    pending.push_back(visitOf(roots[static_cast<std::size_t>(r)], {-1, -1, -1}, rootLeafPath(r)));
+  std::size_t halved = 0;
+  while (!pending.empty()) {
+    const LeafVisit v = pending.back();
+    pending.pop_back();
+    if (!v.hasSplitVertex) continue;
+    const std::array<Tetrahedron, 2> halves = bisectTetrahedron(v.t, v.splitVertex);
+    for (int h = 0; h < 2; ++h) {
+      LeafVisit half = v;
+      toHalf(half, h);
+      ASSERT_EQ(half.t.v, halves[static_cast<std::size_t>(h)].v) << "half " << h << " of path " << v.path;
+      const LeafVisit found = visitOf(half.t, v.splitVertex, halfLeafPath(v.path, h));
+      EXPECT_EQ(half.path, found.path);
+      EXPECT_EQ(half.creator, found.creator);
+      EXPECT_EQ(half.creatorSlot, found.creatorSlot);
+      EXPECT_GE(half.creatorSlot, 0);
+      EXPECT_EQ(half.longest, found.longest);
+      EXPECT_EQ(half.hasSplitVertex, found.hasSplitVertex);
+      EXPECT_EQ(half.splitVertex, found.splitVertex);
+      pending.push_back(half);
+      ++halved;
+    }
+  }
+  EXPECT_EQ(halved, 2 * (6u * 64u - 6u));  // every split makes two of the 6 per cell from 6 roots
 }
 
 TEST(DiamondMesh, FullRefinementHasSixTetrahedraPerCell) {
