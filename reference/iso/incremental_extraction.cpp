@@ -114,15 +114,18 @@ GridPoint widen(const std::array<std::int16_t, 3>& p) { return {p[0], p[1], p[2]
 
 }  // namespace
 
+int IncrementalExtraction::creatorSlotOf(const Leaf& l) {
+  return (l.bits & kHasCreator) ? static_cast<int>((l.bits >> kCreatorSlotShift) & 3) : -1;
+}
+
 GridPoint IncrementalExtraction::creatorOf(const Leaf& l) {
-  if ((l.bits & kHasCreator) == 0) return {-1, -1, -1};
-  return widen(l.v[(l.bits >> kCreatorSlotShift) & 3]);
+  const int slot = creatorSlotOf(l);
+  return slot < 0 ? GridPoint{-1, -1, -1} : widen(l.v[static_cast<std::size_t>(slot)]);
 }
 
 GridPoint IncrementalExtraction::splitVertexOf(const Leaf& l) {
   const auto [i, j] = kEdges[(l.bits >> kEdgeShift) & 7];
-  const auto &a = l.v[static_cast<std::size_t>(i)], &b = l.v[static_cast<std::size_t>(j)];
-  return {(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1};  // even sums: the leaf has a split vertex
+  return evenMidpoint(widen(l.v[static_cast<std::size_t>(i)]), widen(l.v[static_cast<std::size_t>(j)]));
 }
 
 // extractIsosurface's step for one leaf: skipped when its diamond's range excludes the isovalue,
@@ -229,8 +232,8 @@ void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
       if (mesh.isSplitPoint(m)) {  // split: new leaves below it
         Tetrahedron t;
         for (std::size_t k = 0; k < 4; ++k) t.v[k] = widen(old.v[k]);
-        const int slot = (old.bits & kHasCreator) ? static_cast<int>((old.bits >> kCreatorSlotShift) & 3) : -1;
-        const LeafVisit start{t, creatorOf(old), path, true, m, kEdges[(old.bits >> kEdgeShift) & 7], slot};
+        const LeafVisit start{
+            t, creatorOf(old), path, true, m, kEdges[(old.bits >> kEdgeShift) & 7], creatorSlotOf(old)};
         forget(old);
         mesh.forEachLeafBelow(start, addLeaf);
         ++i;

@@ -87,6 +87,7 @@ class IncrementalExtraction {
                                  kRead = std::uint64_t{1} << 15, kCrossing = std::uint64_t{1} << 16,
                                  kLeafFlags = std::uint64_t{0x1ff} << 8;
   static std::uint64_t pathOf(const Leaf& l) { return l.bits & ~kLeafFlags; }
+  static int creatorSlotOf(const Leaf& l);  // -1 for a root
   static GridPoint creatorOf(const Leaf& l);
   static GridPoint splitVertexOf(const Leaf& l);
 

@@ -134,15 +134,19 @@ inline std::uint64_t halfLeafPath(std::uint64_t parent, int half) {
   return ((parent & ~kLeafPathDepthMask) | (half == 0 ? std::uint64_t{1} << (61 - depth) : 0)) | depth;
 }
 
+// The midpoint of a and b, whose coordinate sums are even (so halving them is exact).
+inline GridPoint evenMidpoint(const GridPoint& a, const GridPoint& b) {
+  return {(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1};
+}
+
 // Completes the visit v of v.t: its longest edge, and its split vertex when the midpoint of that
-// edge is a grid point (the edge's coordinate sums are then even, so halving them is exact).
+// edge is a grid point (the edge's coordinate sums are even).
 inline void completeVisit(LeafVisit& v) {
   v.longest = longestEdge(v.t);
   const GridPoint &a = v.t.v[static_cast<std::size_t>(v.longest.first)],
                   &b = v.t.v[static_cast<std::size_t>(v.longest.second)];
   v.hasSplitVertex = ((a[0] + b[0]) & 1) == 0 && ((a[1] + b[1]) & 1) == 0 && ((a[2] + b[2]) & 1) == 0;
-  v.splitVertex =
-      v.hasSplitVertex ? GridPoint{(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1} : GridPoint{-1, -1, -1};
+  v.splitVertex = v.hasSplitVertex ? evenMidpoint(a, b) : GridPoint{-1, -1, -1};
 }
 
 // The visit of t with the creator found among its corners (-1 when creator[0] < 0 or it is none).
