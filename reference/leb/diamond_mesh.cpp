@@ -70,11 +70,7 @@ void DiamondMesh::merge(const GridPoint& d) {
 }
 
 std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m) {
-  return bisectTetrahedron(t, longestEdge(t), m);
-}
-
-std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, std::pair<int, int> edge, const GridPoint& m) {
-  const auto [i, j] = edge;
+  const auto [i, j] = longestEdge(t);
   Tetrahedron a = t, b = t;
   a.v[static_cast<std::size_t>(j)] = m;  // keeps v[i]
   b.v[static_cast<std::size_t>(i)] = m;  // keeps v[j]

@@ -115,9 +115,9 @@ inline std::pair<int, int> longestEdge(const Tetrahedron& t) {
   return e;
 }
 // The two halves of t cut at the midpoint m of its longest edge (first keeps the edge's first
-// endpoint).
+// endpoint): the definition the traversal's toHalf follows in place (diamond_mesh_test.cpp
+// compares them).
 std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, const GridPoint& m);
-std::array<Tetrahedron, 2> bisectTetrahedron(const Tetrahedron& t, std::pair<int, int> edge, const GridPoint& m);
 
 // A tetrahedron's path: which root tetrahedron, then which half at every bisection below it, and
 // how many bisections (its depth, in bits 7..0). The traversal takes the roots from a stack (the

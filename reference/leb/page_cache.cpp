@@ -5,22 +5,17 @@
 namespace voxref::ref {
 
 const std::vector<std::int16_t>* PageCache::peek(std::uint64_t key) {
-  if (!lru_.empty()) {
-    if (lru_.front().key == key) {  // already the most recent
-      ++stats_.hits;
-      return lru_.front().page.get();
-    }
-    if (const auto second = std::next(lru_.begin()); second != lru_.end() && second->key == key) {
-      ++stats_.hits;
-      lru_.splice(lru_.begin(), lru_, second);
-      return second->page.get();
-    }
+  // The two most recent pages without the index, the others through it.
+  const auto holds = [&](std::list<Entry>::iterator at) { return at != lru_.end() && at->key == key; };
+  auto it = lru_.begin();
+  if (!holds(it) && (lru_.empty() || !holds(++it))) {
+    const auto found = index_.find(key);
+    if (found == index_.end()) return nullptr;
+    it = found->second;
   }
-  const auto it = index_.find(key);
-  if (it == index_.end()) return nullptr;
   ++stats_.hits;
-  lru_.splice(lru_.begin(), lru_, it->second);
-  return it->second->page.get();
+  lru_.splice(lru_.begin(), lru_, it);  // no effect on the most recent page
+  return it->page.get();
 }
 
 PageCache::Page PageCache::find(std::uint64_t key) { return peek(key) ? lru_.front().page : nullptr; }
