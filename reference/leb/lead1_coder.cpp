@@ -110,7 +110,8 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
                              .subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
   // The one-lookup entries: every kFastBits-bit window that starts with a whole code of the
   // context (its sign and magnitude may run past the window), except symbol valueBits, whose
-  // magnitude the table path checks (signMagnitude: below it every magnitude is in range).
+  // magnitude the table path checks (signMagnitude: below it every magnitude is in range, so under
+  // 2^15 and the delta fits the entry's 16 bits). A value wholly in the window carries its delta.
   constexpr int F = kFastBits;
   fast_.assign(static_cast<std::size_t>(symbols_) << F, 0);
   for (int ctx = 0; ctx < symbols_; ++ctx) {
@@ -120,7 +121,12 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
       const std::uint16_t e = t.entry(t.bits() <= F ? window >> (F - t.bits()) : window << (t.bits() - F));
       const int length = e & 15, s = e >> 4;
       if (e == 0 || length > F || s == valueBits_) continue;
-      fast_[(static_cast<std::size_t>(ctx) << F) | window] = static_cast<std::uint16_t>((length + s) | s << 5);
+      const int total = length + s;
+      std::uint32_t entry = static_cast<std::uint32_t>(total | s << 5);
+      if (total <= F)
+        entry |= kWholeValue |
+                 static_cast<std::uint32_t>(static_cast<std::uint16_t>(fastDelta(entry, window >> (F - total)))) << 16;
+      fast_[(static_cast<std::size_t>(ctx) << F) | window] = entry;
     }
   }
 }
@@ -146,9 +152,9 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
     for (; i < out.size(); ++i) {
       const std::uint32_t e = decoder_->fastEntry(context, in.peek(Lead1Decoder::kFastBits));
       if (e == 0) break;
-      out[i] = Lead1Decoder::fastDelta(e, in.peek(static_cast<int>(e & 31)));
+      out[i] = Lead1Decoder::deltaOf(e, in);
       in.skip(static_cast<int>(e & 31));
-      context = static_cast<int>(e >> 5);
+      context = Lead1Decoder::symbolOf(e);
     }
     if (in.overrun()) [[unlikely]]
       for (std::size_t j = start; j < i; ++j) (void)next();  // replays the run to throw at its value

@@ -77,18 +77,26 @@ class Lead1Decoder {
                   std::string_view what) const;
 
   // One lookup per value: fastEntry(context, next kFastBits bits) is 0, or the value's length (its
-  // code, sign and magnitude bits; bits 0-4) and its symbol (the next context; bits 5-9), the
-  // delta then following from the peeked bits (fastDelta). 0 where the code is longer than
-  // kFastBits, no code matches, or the symbol is valueBits (the only one whose magnitude can
-  // be out of range): the reader then takes the table path, which checks and names the problem.
+  // code, sign and magnitude bits; bits 0-4) and its symbol (the next context; bits 5-9); where the
+  // whole value lies in the peeked bits (kWholeValue set), its delta too (bits 16-31, two's
+  // complement), and otherwise the delta follows from the value's bits (fastDelta): deltaOf gives
+  // it either way. 0 where the code is longer than kFastBits, no code matches, or the symbol is
+  // valueBits (the only one whose magnitude can be out of range): the reader then takes the table
+  // path, which checks and names the problem.
   static constexpr int kFastBits = 10;
+  static constexpr std::uint32_t kWholeValue = 1u << 10;
   std::uint32_t fastEntry(int context, std::uint32_t peeked) const {
     return fast_[(static_cast<std::size_t>(context) << kFastBits) | peeked];
+  }
+  static int symbolOf(std::uint32_t e) { return static_cast<int>((e >> 5) & 31); }
+  // The delta of fast entry e whose value starts at the reader's next bit.
+  static std::int32_t deltaOf(std::uint32_t e, const BitReader& in) {
+    return (e & kWholeValue) ? static_cast<std::int32_t>(e) >> 16 : fastDelta(e, in.peek(static_cast<int>(e & 31)));
   }
   // The delta of a fast entry e from the value's bits (the next e & 31 bits of the page): the low
   // s = symbol bits are the sign, then the magnitude below its leading one (FORMAT.md).
   static std::int32_t fastDelta(std::uint32_t e, std::uint32_t valueBitsPeeked) {
-    const int s = static_cast<int>(e >> 5);
+    const int s = symbolOf(e);
     const std::uint32_t bits = valueBitsPeeked & ((1u << s) - 1), lead = (1u << s) >> 1;
     const std::int32_t magnitude = static_cast<std::int32_t>(lead | (bits & (lead - 1)));
     return (bits & lead) ? -magnitude : magnitude;
@@ -99,7 +107,7 @@ class Lead1Decoder {
   int valueBits_;
   int symbols_;
   std::vector<HuffmanDecodeTable> tables_;
-  std::vector<std::uint16_t> fast_;
+  std::vector<std::uint32_t> fast_;
 };
 
 // Reads the deltas of one page one at a time, for a decoder that does not know in advance how
@@ -113,12 +121,12 @@ class Lead1PageReader {
     const std::uint32_t e = decoder_->fastEntry(context_, in_.peek(Lead1Decoder::kFastBits));
     if (e == 0) [[unlikely]]
       return nextByTable();
-    const std::int32_t d = Lead1Decoder::fastDelta(e, in_.peek(static_cast<int>(e & 31)));
+    const std::int32_t d = Lead1Decoder::deltaOf(e, in_);
     in_.skip(static_cast<int>(e & 31));
     if (in_.overrun()) [[unlikely]]
       fail("the page ends inside this value");
     ++read_;
-    context_ = static_cast<int>(e >> 5);
+    context_ = Lead1Decoder::symbolOf(e);
     return d;
   }
   // The next out.size() values: the same values and errors as that many next() calls, faster (the

@@ -197,8 +197,16 @@ class DecodeRun {
     reader.read(delta);
     auto store = [&](auto* to) {
       using T = std::remove_pointer_t<decltype(to)>;
-      for (std::size_t j = 0; j < n_; ++j)
-        to[at_[j]] = static_cast<T>(reconstructSample(prediction_[j], delta[j], spec_.valueBits, spec_.isSigned));
+      // reconstructSample's sum modulo 2^b, as the output type takes it: the samples are unsigned
+      // (their mask, in 8 or 16 bits), the gradients 8-bit two's complement in int8 (the
+      // conversion, C++20 [conv.integral]); parseLebStream admits no other channel.
+      if constexpr (std::is_signed_v<T>) {
+        for (std::size_t j = 0; j < n_; ++j) to[at_[j]] = static_cast<T>(prediction_[j] + delta[j]);
+      } else {
+        const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << spec_.valueBits) - 1);
+        for (std::size_t j = 0; j < n_; ++j)
+          to[at_[j]] = static_cast<T>(static_cast<std::uint32_t>(prediction_[j] + delta[j]) & mask);
+      }
     };
     if (spec_.kind == LebChannelKind::Gradients)
       store(out_.gradients);
@@ -549,14 +557,19 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
                   const int from = first * perBatch, to = std::min(static_cast<int>(segments.size()), last * perBatch);
                   parallelFor(to - from, threads, [&](int i) {
                     const Segment& seg = segments[static_cast<std::size_t>(from + i)];
+                    if (!seg.reader) {  // pages the stream lacks: no point of the volume may lie in them
+                      walkInside(
+                          order, s.dims, padding, inside, seg.begin, seg.end,
+                          [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(ch, h >> pb); });
+                      return;
+                    }
                     DecodeRun run(spec, out);
                     walkInside(order, s.dims, padding, inside, seg.begin, seg.end,
-                               [&](std::uint64_t h, std::size_t vi, int k, std::int32_t pred) {
-                                 if (!seg.reader) throw pageNotStored(ch, h >> pb);
+                               [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
                                  run.add(static_cast<std::size_t>(spec.components) * vi + static_cast<std::size_t>(k),
                                          pred, *seg.reader);
                                });
-                    if (seg.reader) run.flush(*seg.reader);
+                    run.flush(*seg.reader);
                   });
                 });
       for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {

@@ -107,8 +107,8 @@ void LebPadding::forEachShellPoint(int level, F&& f) const {
     for (int z = first[2]; z <= last[2]; z += 2 * h)
       for (int y = first[1]; y <= last[1]; y += 2 * h) {
         int x = first[0];
-        if (y < dims_[1] && z < dims_[2])  // the row crosses the volume: start past it
-          while (x < dims_[0]) x += 2 * h;
+        if (y < dims_[1] && z < dims_[2] && x < dims_[0])  // the row crosses the volume: start past it
+          x += (dims_[0] - x + 2 * h - 1) / (2 * h) * (2 * h);
         for (; x <= last[0]; x += 2 * h) f(GridPoint{x, y, z}, scaleLog2, odd);
       }
   }
