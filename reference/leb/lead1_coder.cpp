@@ -129,6 +129,25 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
       fast_[(static_cast<std::size_t>(ctx) << F) | window] = entry;
     }
   }
+  // Pairs: a window whose first value lies wholly in it, followed by a second (in the first's
+  // symbol as context) that does too. The second's entry is looked up with zero bits shifted in
+  // behind the window; it depends only on its own bits, which all lie in the window.
+  std::vector<std::uint32_t> pairs(fast_.size(), 0);
+  for (std::size_t at = 0; at < fast_.size(); ++at) {
+    const std::uint32_t first = fast_[at];
+    if (!(first & kWholeValue)) continue;
+    const int length = static_cast<int>(first & 31), context = symbolOf(first);
+    const std::uint32_t window = static_cast<std::uint32_t>(at) & ((1u << F) - 1);
+    const std::uint32_t second = fastEntry(context, (window << length) & ((1u << F) - 1));
+    if (!(second & kWholeValue) || length + static_cast<int>(second & 31) > F) continue;
+    const auto bits10 = [](std::uint32_t e) {
+      return static_cast<std::uint32_t>(static_cast<std::int32_t>(e) >> 16) & 1023u;
+    };
+    pairs[at] = (static_cast<std::uint32_t>(length) + (second & 31)) | (second & (31u << 5)) | kPair |
+                bits10(first) << 12 | bits10(second) << 22;
+  }
+  for (std::size_t at = 0; at < fast_.size(); ++at)
+    if (pairs[at] != 0) fast_[at] = pairs[at];
 }
 
 void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
@@ -149,10 +168,17 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
     BitReader in = in_;
     int context = context_;
     const std::size_t start = i;
-    for (; i < out.size(); ++i) {
+    while (i < out.size()) {
       const std::uint32_t e = decoder_->fastEntry(context, in.peek(Lead1Decoder::kFastBits));
       if (e == 0) break;
-      out[i] = Lead1Decoder::deltaOf(e, in);
+      if (e & Lead1Decoder::kPair) {
+        if (i + 1 == out.size()) break;  // room for one value: the table path takes it
+        out[i] = Lead1Decoder::pairFirst(e);
+        out[i + 1] = Lead1Decoder::pairSecond(e);
+        i += 2;
+      } else {
+        out[i++] = Lead1Decoder::deltaOf(e, in);
+      }
       in.skip(static_cast<int>(e & 31));
       context = Lead1Decoder::symbolOf(e);
     }

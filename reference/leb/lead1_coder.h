@@ -76,23 +76,30 @@ class Lead1Decoder {
   void decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
                   std::string_view what) const;
 
-  // One lookup per value: fastEntry(context, next kFastBits bits) is 0, or the value's length (its
-  // code, sign and magnitude bits; bits 0-4) and its symbol (the next context; bits 5-9); where the
-  // whole value lies in the peeked bits (kWholeValue set), its delta too (bits 16-31, two's
-  // complement), and otherwise the delta follows from the value's bits (fastDelta): deltaOf gives
-  // it either way. 0 where the code is longer than kFastBits, no code matches, or the symbol is
-  // valueBits (the only one whose magnitude can be out of range): the reader then takes the table
-  // path, which checks and names the problem.
+  // One lookup per value, or per two: fastEntry(context, next kFastBits bits) is
+  //   - 0 where the code is longer than kFastBits, no code matches, or the symbol is valueBits
+  //     (the only one whose magnitude can be out of range): the reader then takes the table path,
+  //     which checks and names the problem;
+  //   - else, without kPair, one value: its length (its code, sign and magnitude bits; bits 0-4),
+  //     its symbol (the next context; bits 5-9) and, where the whole value lies in the peeked bits
+  //     (kWholeValue set), its delta (bits 16-31, two's complement); otherwise the delta follows
+  //     from the value's bits (fastDelta). deltaOf gives it either way;
+  //   - with kPair, two values that both lie in the peeked bits, the second coded in the
+  //     context of the first: their length together (bits 0-4), the second's symbol (bits 5-9)
+  //     and their deltas (pairFirst, bits 12-21, and pairSecond, bits 22-31: a value of at most
+  //     kFastBits bits has a symbol below kFastBits, so |delta| < 2^9).
   static constexpr int kFastBits = 10;
-  static constexpr std::uint32_t kWholeValue = 1u << 10;
+  static constexpr std::uint32_t kWholeValue = 1u << 10, kPair = 1u << 11;
   std::uint32_t fastEntry(int context, std::uint32_t peeked) const {
     return fast_[(static_cast<std::size_t>(context) << kFastBits) | peeked];
   }
   static int symbolOf(std::uint32_t e) { return static_cast<int>((e >> 5) & 31); }
-  // The delta of fast entry e whose value starts at the reader's next bit.
+  // The delta of a one-value entry e whose value starts at the reader's next bit.
   static std::int32_t deltaOf(std::uint32_t e, const BitReader& in) {
     return (e & kWholeValue) ? static_cast<std::int32_t>(e) >> 16 : fastDelta(e, in.peek(static_cast<int>(e & 31)));
   }
+  static std::int32_t pairFirst(std::uint32_t e) { return static_cast<std::int32_t>(e << 10) >> 22; }
+  static std::int32_t pairSecond(std::uint32_t e) { return static_cast<std::int32_t>(e) >> 22; }
   // The delta of a fast entry e from the value's bits (the next e & 31 bits of the page): the low
   // s = symbol bits are the sign, then the magnitude below its leading one (FORMAT.md).
   static std::int32_t fastDelta(std::uint32_t e, std::uint32_t valueBitsPeeked) {
@@ -119,7 +126,7 @@ class Lead1PageReader {
   // Throws StreamError: no code matches, the page ends, a delta out of range.
   std::int32_t next() {
     const std::uint32_t e = decoder_->fastEntry(context_, in_.peek(Lead1Decoder::kFastBits));
-    if (e == 0) [[unlikely]]
+    if (e == 0 || (e & Lead1Decoder::kPair)) [[unlikely]]  // one value at a time: a pair's first by the table
       return nextByTable();
     const std::int32_t d = Lead1Decoder::deltaOf(e, in_);
     in_.skip(static_cast<int>(e & 31));
