@@ -140,9 +140,7 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
     const std::uint32_t window = static_cast<std::uint32_t>(at) & ((1u << F) - 1);
     const std::uint32_t second = fastEntry(context, (window << length) & ((1u << F) - 1));
     if (!(second & kWholeValue) || length + static_cast<int>(second & 31) > F) continue;
-    const auto bits10 = [](std::uint32_t e) {
-      return static_cast<std::uint32_t>(static_cast<std::int32_t>(e) >> 16) & 1023u;
-    };
+    const auto bits10 = [](std::uint32_t e) { return static_cast<std::uint32_t>(wholeDelta(e)) & 1023u; };
     pairs[at] = (static_cast<std::uint32_t>(length) + (second & 31)) | (second & (31u << 5)) | kPair |
                 bits10(first) << 12 | bits10(second) << 22;
   }

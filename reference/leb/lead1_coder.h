@@ -96,8 +96,9 @@ class Lead1Decoder {
   static int symbolOf(std::uint32_t e) { return static_cast<int>((e >> 5) & 31); }
   // The delta of a one-value entry e whose value starts at the reader's next bit.
   static std::int32_t deltaOf(std::uint32_t e, const BitReader& in) {
-    return (e & kWholeValue) ? static_cast<std::int32_t>(e) >> 16 : fastDelta(e, in.peek(static_cast<int>(e & 31)));
+    return (e & kWholeValue) ? wholeDelta(e) : fastDelta(e, in.peek(static_cast<int>(e & 31)));
   }
+  static std::int32_t wholeDelta(std::uint32_t e) { return static_cast<std::int32_t>(e) >> 16; }
   static std::int32_t pairFirst(std::uint32_t e) { return static_cast<std::int32_t>(e << 10) >> 22; }
   static std::int32_t pairSecond(std::uint32_t e) { return static_cast<std::int32_t>(e) >> 22; }
   // The delta of a fast entry e from the value's bits (the next e & 31 bits of the page): the low
