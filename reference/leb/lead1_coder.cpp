@@ -81,28 +81,6 @@ void Lead1Encoder::encodePage(std::span<const std::int32_t> deltas, BitWriter& o
   }
 }
 
-namespace {
-
-// The delta of a value's s > 0 sign-and-magnitude bits (FORMAT.md, "Page payload"): the sign bit
-// first, then the magnitude's bits below its leading 1. One function for the one-lookup table and
-// the table path, so the two cannot disagree.
-struct SignMagnitude {
-  bool negative;
-  std::uint32_t magnitude;
-  bool inRange;  // |delta| fits valueBits two's complement
-  std::int32_t delta() const {
-    return negative ? -static_cast<std::int32_t>(magnitude) : static_cast<std::int32_t>(magnitude);
-  }
-};
-SignMagnitude signMagnitude(std::uint32_t bits, int s, int valueBits) {
-  const bool negative = (bits >> (s - 1)) & 1;
-  const std::uint32_t m = (1u << (s - 1)) | (bits & ((1u << (s - 1)) - 1));
-  const std::uint32_t limit = 1u << (valueBits - 1);
-  return {negative, m, !(m > limit || (m == limit && !negative))};
-}
-
-}  // namespace
-
 Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), symbols_(code.symbols()) {
   if (const std::string p = lead1CodeProblem(code); !p.empty()) throw std::invalid_argument("lead-1 code: " + p);
   for (int ctx = 0; ctx < symbols_; ++ctx)
@@ -110,7 +88,7 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
                              .subspan(static_cast<std::size_t>(ctx * symbols_), static_cast<std::size_t>(symbols_)));
   // The one-lookup entries: every kFastBits-bit window that starts with a whole code of the
   // context (its sign and magnitude may run past the window), except symbol valueBits, whose
-  // magnitude the table path checks (signMagnitude: below it every magnitude is in range, so under
+  // magnitude the table path checks (Lead1SignMagnitude::fits: below it every magnitude is in range, so under
   // 2^15 and the delta fits the entry's 16 bits). A value wholly in the window carries its delta.
   constexpr int F = kFastBits;
   fast_.assign(static_cast<std::size_t>(symbols_) << F, 0);
@@ -208,8 +186,8 @@ std::int32_t Lead1PageReader::nextByTable() {
   if (s > 0) {
     const std::uint32_t bits = in_.get(s);
     if (in_.overrun()) fail("the page ends inside this value");
-    const SignMagnitude v = signMagnitude(bits, s, decoder_->valueBits_);
-    if (!v.inRange)
+    const Lead1SignMagnitude v = lead1SignMagnitude(bits, s);
+    if (!v.fits(decoder_->valueBits_))
       fail("delta " + std::string(v.negative ? "-" : "+") + std::to_string(v.magnitude) + " is outside the " +
            std::to_string(decoder_->valueBits_) + "-bit range");
     d = v.delta();

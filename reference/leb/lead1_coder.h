@@ -67,6 +67,26 @@ class Lead1Encoder {
   std::vector<std::uint32_t> codes_;
 };
 
+// A value's s > 0 sign-and-magnitude bits (FORMAT.md, "Page payload"): the sign bit first, then the
+// magnitude's bits below its leading 1. One definition for the one-lookup entries and the table
+// path, so the two cannot disagree.
+struct Lead1SignMagnitude {
+  bool negative;
+  std::uint32_t magnitude;
+  std::int32_t delta() const {
+    return negative ? -static_cast<std::int32_t>(magnitude) : static_cast<std::int32_t>(magnitude);
+  }
+  // |delta| fits valueBits two's complement (+2^(b-1) does not).
+  bool fits(int valueBits) const {
+    const std::uint32_t limit = 1u << (valueBits - 1);
+    return !(magnitude > limit || (magnitude == limit && !negative));
+  }
+};
+inline Lead1SignMagnitude lead1SignMagnitude(std::uint32_t bits, int s) {
+  const std::uint32_t lead = 1u << (s - 1);
+  return {(bits & lead) != 0, lead | (bits & (lead - 1))};
+}
+
 class Lead1Decoder {
  public:
   explicit Lead1Decoder(const Lead1Code& code);  // throws std::invalid_argument when lead1CodeProblem != ""
@@ -102,12 +122,10 @@ class Lead1Decoder {
   static std::int32_t pairFirst(std::uint32_t e) { return static_cast<std::int32_t>(e << 10) >> 22; }
   static std::int32_t pairSecond(std::uint32_t e) { return static_cast<std::int32_t>(e) >> 22; }
   // The delta of a fast entry e from the value's bits (the next e & 31 bits of the page): the low
-  // s = symbol bits are the sign, then the magnitude below its leading one (FORMAT.md).
+  // s = symbol bits are the sign and magnitude (lead1SignMagnitude).
   static std::int32_t fastDelta(std::uint32_t e, std::uint32_t valueBitsPeeked) {
     const int s = symbolOf(e);
-    const std::uint32_t bits = valueBitsPeeked & ((1u << s) - 1), lead = (1u << s) >> 1;
-    const std::int32_t magnitude = static_cast<std::int32_t>(lead | (bits & (lead - 1)));
-    return (bits & lead) ? -magnitude : magnitude;
+    return s == 0 ? 0 : lead1SignMagnitude(valueBitsPeeked & ((1u << s) - 1), s).delta();
   }
 
  private:
