@@ -48,7 +48,6 @@ class BitReader {
   // The next n bits (1 <= n <= 32) without consuming them.
   std::uint32_t peek(int n) const { return static_cast<std::uint32_t>(buf_ >> (64 - n)); }
   void skip(int n) {
-    consumed_ += static_cast<std::size_t>(n);
     buf_ <<= n;
     avail_ -= n;
     if (avail_ < 32) refill();
@@ -59,8 +58,10 @@ class BitReader {
     skip(n);
     return v;
   }
-  std::size_t bitsConsumed() const { return consumed_; }
-  bool overrun() const { return consumed_ > size_ * 8; }
+  // The bits taken so far: every refill adds to buf_ exactly the bits of the bytes it counts in
+  // next_, so those are the consumed ones and the avail_ still in buf_.
+  std::size_t bitsConsumed() const { return 8 * next_ - static_cast<std::size_t>(avail_); }
+  bool overrun() const { return bitsConsumed() > size_ * 8; }
 
  private:
   void refill() {
@@ -85,7 +86,7 @@ class BitReader {
   }
   const unsigned char* p_;
   std::size_t size_;
-  std::size_t next_ = 0, consumed_ = 0;
+  std::size_t next_ = 0;
   std::uint64_t buf_ = 0;
   int avail_ = 0;  // valid bits at the top of buf_ (zeros past the end count as valid)
 };

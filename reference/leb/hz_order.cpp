@@ -56,6 +56,15 @@ bool HzOrder::allInside(const std::array<int, 3>& dims, std::uint64_t begin, std
   });
 }
 
+std::uint64_t HzOrder::countInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const {
+  end = std::min(end, size());
+  if (begin >= end) return 0;
+  if (allInside(dims, begin, end)) return end - begin;
+  std::uint64_t n = 0;
+  forEachInside(dims, begin, end, [&](std::uint64_t, const GridPoint&, int, int, unsigned) { ++n; });
+  return n;
+}
+
 std::uint64_t HzOrder::index(const GridPoint& p) const {
   const LebPointClass c = classifyPoint(grid_, p);
   if (c.level < 0) return (p[0] ? 1u : 0u) | (p[1] ? 2u : 0u) | (p[2] ? 4u : 0u);

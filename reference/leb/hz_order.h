@@ -57,13 +57,32 @@ class HzOrder {
   // range whose points all lie inside (a caller then walks them). Costs a few operations per level,
   // not per point.
   bool allInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const;
-  // forEachInside by cells, for a range whose points all lie inside the box (allInside(dims,
-  // begin, end) is true) and that holds no root corner (begin >= 8): calls
-  // f(h, base, level, scaleLog2, odd, first, last) for each cell with points in [begin, end), in
-  // index order. The cell's points in the range are base + 2^scaleLog2 * (the axes of odd[o]) for o
-  // in [first, last), with indices h, h + 1, ...: the points forEachInside gives, in its order, and
-  // their odd axes. The codec's walk (leb_codec.cpp, encoder and decoder) takes its per-cell work out
-  // of the per-point loop this way.
+  // How many grid points with index in [begin, end) lie inside the box [0, dims): the points
+  // forEachInside gives (at the cost of allInside where it holds).
+  std::uint64_t countInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end) const;
+  // A group of cells of one level's block, as forEachCellInside gives it: the cells whose Morton
+  // codes differ only in their low freeAxes bits (2^freeAxes cells; fewer only in a block of one
+  // cell), and those of their points that lie in the range.
+  struct CellGroup {
+    static constexpr int kMaxPoints = 24;  // 8 cells of 3 points
+    std::uint64_t h;                       // the index of point `first`
+    GridPoint base;                        // the corner of cell 0 (its low code bits zero)
+    int level, scaleLog2;
+    int freeAxes;         // bit i of a cell's number j moves it by 2^(scaleLog2 + 1) on axis[i]
+    const int* axis;      // (mortonEncode's order); the other axes hold the grid's far side
+    const unsigned* odd;  // a cell's points by their odd axes, in index order
+    int orientations;     // how many points a cell has
+    int first, last;      // point q in [first, last): cell q / orientations, odd[q % orientations]
+    int fullPoints;       // 2^freeAxes x orientations: last - first for a whole group
+    int blockKey;         // the same for the groups of one level's block, and only for them
+  };
+  // forEachInside by groups of cells, for a range whose points all lie inside the box
+  // (allInside(dims, begin, end) is true) and that holds no root corner (begin >= 8): calls
+  // f(group) for each group with points in [begin, end), in index order; the group's points in
+  // the range have indices group.h, group.h + 1, ...: the points forEachInside gives, in its order.
+  // The codec's walk (leb_codec.cpp, encoder and decoder) takes its per-cell work out of the
+  // per-point loop this way: a group's points lie at the same offsets from its corner in every
+  // group of a block.
   template <class F>
   void forEachCellInside(const std::array<int, 3>& dims, std::uint64_t begin, std::uint64_t end, F&& f) const;
 
@@ -315,22 +334,30 @@ void HzOrder::forEachCellInside(const std::array<int, 3>& dims, std::uint64_t be
   const int side = grid_.side();
   forEachBlockPart(dims, begin, end, [&](const BlockPart& part) {
     const Block& blk = part.blk;
-    const std::uint64_t orientations = blk.orientations.size();
+    const auto orientations = static_cast<std::uint64_t>(blk.orientations.size());
     const int cellSide = 2 << part.lv.scaleLog2, nf = part.nf;
-    // The low nf bits of a cell's code are bit 0 of its free coordinates (mortonEncode): the rest
-    // is decoded once per group of 2^nf cells.
-    const std::uint64_t group = (std::uint64_t{1} << nf) - 1;
-    int high[3] = {0, 0, 0};
-    for (std::uint64_t m = part.mlo; m < part.mhi; ++m) {
-      if (m == part.mlo || (m & group) == 0) mortonDecode(m & ~group, nf, high);
-      GridPoint base{side, side, side};
-      for (int i = 0; i < nf; ++i)
-        base[static_cast<std::size_t>(part.axis[i])] = cellSide * (high[i] | static_cast<int>((m >> i) & 1u));
-      const std::uint64_t h0 = blk.begin + m * orientations;  // the cell's first point
-      const int first = h0 < begin ? static_cast<int>(begin - h0) : 0;
-      const int last = static_cast<int>(std::min(orientations, end - h0));
-      f(h0 + static_cast<std::uint64_t>(first), base, part.level, part.lv.scaleLog2, blk.orientations.data(), first,
-        last);
+    const std::uint64_t groupCells = std::uint64_t{1} << nf;
+    CellGroup g{0,
+                {side, side, side},
+                part.level,
+                part.lv.scaleLog2,
+                nf,
+                part.axis,
+                blk.orientations.data(),
+                static_cast<int>(orientations),
+                0,
+                0,
+                static_cast<int>(groupCells * orientations),
+                8 * part.level + static_cast<int>(&blk - part.lv.blocks)};
+    for (std::uint64_t m0 = part.mlo & ~(groupCells - 1); m0 < part.mhi; m0 += groupCells) {
+      int c[3] = {0, 0, 0};
+      mortonDecode(m0, nf, c);
+      for (int i = 0; i < nf; ++i) g.base[static_cast<std::size_t>(part.axis[i])] = cellSide * c[i];
+      const std::uint64_t h0 = blk.begin + m0 * orientations;  // the group's first point
+      g.first = h0 < begin ? static_cast<int>(begin - h0) : 0;
+      g.last = static_cast<int>(std::min(std::min(groupCells, blk.cells - m0) * orientations, end - h0));
+      g.h = h0 + static_cast<std::uint64_t>(g.first);
+      f(static_cast<const CellGroup&>(g));
     }
     return true;
   });

@@ -34,8 +34,27 @@ ChannelSpec specOf(LebChannelKind kind, int sampleBits) {
 }
 ChannelSpec specOf(const LebChannel& c) { return {c.kind, c.components, c.valueBits, c.isSigned}; }
 
-// The values of a channel at its points inside the volume (the samples at 8 or 16 bits, or their
-// gradients, in volume order) as the predictor reads them: exactly one pointer is set.
+// Calls f with the channel's values in a volume span (LebVolumeIn or LebVolumeOut): the samples
+// at 8 or 16 bits, or the gradients (3 int8 components a sample), in volume order.
+template <class Span, class F>
+void withChannel(const Span& v, LebChannelKind kind, F&& f) {
+  if (kind == LebChannelKind::Gradients)
+    f(v.gradients);
+  else if (v.data8)
+    f(v.data8);
+  else
+    f(v.data16);
+}
+
+// The components of a channel stored as T: the gradients are its only signed type
+// (parseLebStream admits no other channel).
+template <class T>
+constexpr int componentsOf() {
+  return std::is_signed_v<T> ? 3 : 1;
+}
+
+// The values of a channel at its points inside the volume as the predictor reads them: exactly
+// one pointer is set.
 struct InsideValues {
   const std::uint8_t* data8 = nullptr;
   const std::uint16_t* data16 = nullptr;
@@ -45,106 +64,150 @@ struct InsideValues {
     if (data16) return static_cast<std::int32_t>(data16[vi]);
     return static_cast<std::int32_t>(gradients[3 * vi + static_cast<std::size_t>(k)]);
   }
+  template <class F>
+  void visit(F&& f) const {
+    withChannel(*this, gradients ? LebChannelKind::Gradients : LebChannelKind::Data, f);
+  }
 };
 
 template <class Span>
 InsideValues insideOf(const Span& v, LebChannelKind kind) {
-  if (kind == LebChannelKind::Gradients) return InsideValues{nullptr, nullptr, v.gradients};
-  return InsideValues{v.data8, v.data16, nullptr};
+  InsideValues r;
+  withChannel(v, kind, [&](auto* p) {
+    using T = std::remove_cv_t<std::remove_pointer_t<decltype(p)>>;
+    if constexpr (std::is_same_v<T, std::uint8_t>)
+      r.data8 = p;
+    else if constexpr (std::is_same_v<T, std::uint16_t>)
+      r.data16 = p;
+    else
+      r.gradients = p;
+  });
+  return r;
 }
 
 // The walk both the encoder and the decoder make (section 3.1, steps 2-4 of the reconstruction):
 // the points inside the volume with index in [begin, end), in hierarchical order, each predicted
 // from its split edge (endpoints inside the volume from `inside`, in the padding from the shell,
-// leb_padding.h); valueOf(vi, component, prediction) gives its value (the encoder reads the sample
-// and records the delta; the decoder reads the delta and writes the sample).
+// leb_padding.h). pointsOf(h, vi, pred, n) takes n points at once: those with indices h, h + 1, ...,
+// h + n - 1, at volume indices vi[0..n), their predictions pred[Components q + k] (the encoder
+// reads the samples and records the deltas; the decoder reads the deltas and writes the samples).
+// The points of one call are of one level, whose predictions read only coarser ones, so a
+// consumer may take them in any order.
 //
 // A point whose split-edge endpoints both lie inside the volume (all but the points next to the
 // padding) reads them at volume indices vi + off and vi - off: on every odd axis the edge runs
-// sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a. read(vi, k) is component k
-// of `inside`, with the component count fixed at compile time.
+// sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a. `values` are those of
+// `inside`, as their type, whose component count is fixed at compile time.
 //
 // The range is walked level by level. A level's part whose points all lie inside the volume
-// (HzOrder::allInside: nearly every page of a volume) goes a cell at a time
-// (HzOrder::forEachCellInside), with the per-point work cut down (issue 18, goal 3): the point is
-// p = base + h on its odd axes, the sign of sigma_a is bit 0 of the cell coordinate (p_a = 2h c_a +
-// h, so p_a >> (log2 h + 1) = c_a), and vi and off come from tables by odd axes and cell parities.
-// The other parts go a point at a time (HzOrder::forEachInside). The same points in the same
-// order, with the same predictions, either way.
-template <int Components, class Read, class ValueOf>
+// (HzOrder::allInside: nearly every page of a volume) goes by groups of cells
+// (HzOrder::forEachCellInside), with the per-point work cut down (issue 18, goal 3): a point's
+// volume index and its edge's offset lie at the same offsets from its group's corner in every group
+// of a block, so they come from tables made at the block's first group, and a group whose split
+// edges all lie inside the volume (its far cells' far edges do) is predicted without a check per
+// point and handed over in one call. The other parts, and the other groups, go a point at a time
+// (HzOrder::forEachInside). The same points in the same order, with the same predictions, either
+// way.
+template <class T, class PointsOf>
 void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
-                 Read&& read, std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
+                 const T* values, std::uint64_t begin, std::uint64_t end, PointsOf&& pointsOf) {
+  constexpr int Components = componentsOf<T>();
+  auto read = [&](std::size_t vi, int k) {
+    return static_cast<std::int32_t>(values[Components * vi + static_cast<std::size_t>(k)]);
+  };
   const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
   auto onShell = [&](const GridPoint& p, int level, int scaleLog2, unsigned odd) {
     return predictPoint(p, level, scaleLog2, odd, Components,
                         [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
   };
-  auto betweenInside = [&](std::size_t vi, std::ptrdiff_t off) {  // the endpoints vi +- off, both inside
+  // The prediction's components from the endpoints vi +- off, both inside the volume.
+  auto betweenInside = [&](std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) {
     const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
     const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+    for (int k = 0; k < Components; ++k) pred[k] = predictMidpoint(read(a, k), read(b, k));
+  };
+  auto atPoint = [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
+    const std::size_t vi = volumeIndex(p, dims);
     LebValues pred{0, 0, 0};
-    for (int k = 0; k < Components; ++k) pred[static_cast<std::size_t>(k)] = predictMidpoint(read(a, k), read(b, k));
-    return pred;
+    if (level >= 0) {
+      const int step = 1 << scaleLog2;
+      std::ptrdiff_t off = 0;
+      bool within = true;
+      for (int a = 0; a < 3; ++a)
+        if ((odd >> a) & 1u) {
+          within = within && p[a] + step < dims[a];
+          off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
+        }
+      if (within)
+        betweenInside(vi, off, pred.data());
+      else
+        pred = onShell(p, level, scaleLog2, odd);
+    }
+    pointsOf(h, &vi, pred.data(), 1);
   };
-  auto byPoints = [&](std::uint64_t from, std::uint64_t to) {
-    order.forEachInside(dims, from, to,
-                        [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
-                          const std::size_t vi = volumeIndex(p, dims);
-                          LebValues pred{0, 0, 0};
-                          if (level >= 0) {
-                            const int step = 1 << scaleLog2;
-                            std::ptrdiff_t off = 0;
-                            bool within = true;
-                            for (int a = 0; a < 3; ++a)
-                              if ((odd >> a) & 1u) {
-                                within = within && p[a] + step < dims[a];
-                                off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
-                              }
-                            pred = within ? betweenInside(vi, off) : onShell(p, level, scaleLog2, odd);
-                          }
-                          for (int k = 0; k < Components; ++k) valueOf(h, vi, k, pred[static_cast<std::size_t>(k)]);
-                        });
-  };
-  auto byCells = [&](std::uint64_t from, std::uint64_t to) {
-    int h = 0;                                        // the level's scale; the tables are made for it at the first cell
-    std::ptrdiff_t pointOffset[8], edgeOffset[8][8];  // by odd axes; by odd axes and cell parities
-    order.forEachCellInside(dims, from, to,
-                            [&](std::uint64_t hp, const GridPoint& base, int level, int scaleLog2, const unsigned* odd,
-                                int first, int last) {
-                              if (h != 1 << scaleLog2) {
-                                h = 1 << scaleLog2;
-                                for (unsigned m = 0; m < 8; ++m) {
-                                  pointOffset[m] = 0;
-                                  for (unsigned parity = 0; parity < 8; ++parity) edgeOffset[m][parity] = 0;
-                                  for (int a = 0; a < 3; ++a)
-                                    if ((m >> a) & 1u) {
-                                      pointOffset[m] += h * stride[a];
-                                      for (unsigned parity = 0; parity < 8; ++parity)
-                                        edgeOffset[m][parity] += ((parity >> a) & 1u ? -h : h) * stride[a];
-                                    }
-                                }
-                              }
-                              unsigned parity = 0, within = 0;  // odd cell coordinates; far edges inside
-                              for (int a = 0; a < 3; ++a) {
-                                parity |= static_cast<unsigned>((base[a] >> (scaleLog2 + 1)) & 1) << a;
-                                within |= static_cast<unsigned>(base[a] + 2 * h < dims[a]) << a;
-                              }
-                              const std::ptrdiff_t baseIndex = base[0] + base[1] * stride[1] + base[2] * stride[2];
-                              for (int o = first; o < last; ++o, ++hp) {
-                                const unsigned m = odd[o];
-                                const auto vi = static_cast<std::size_t>(baseIndex + pointOffset[m]);
-                                LebValues pred;
-                                if ((m & ~within) == 0) [[likely]] {
-                                  pred = betweenInside(vi, edgeOffset[m][parity]);
-                                } else {
-                                  GridPoint p = base;
-                                  for (int a = 0; a < 3; ++a) p[a] += ((m >> a) & 1u) ? h : 0;
-                                  pred = onShell(p, level, scaleLog2, m);
-                                }
-                                for (int k = 0; k < Components; ++k)
-                                  valueOf(hp, vi, k, pred[static_cast<std::size_t>(k)]);
-                              }
-                            });
+  auto byPoints = [&](std::uint64_t from, std::uint64_t to) { order.forEachInside(dims, from, to, atPoint); };
+  auto byGroups = [&](std::uint64_t from, std::uint64_t to) {
+    int key = -1;  // the block the tables are made for, at its first group
+    // By the point's number q in a group: its place from the group's corner (grid and volume
+    // index) and its split edge's offset.
+    GridPoint place[HzOrder::CellGroup::kMaxPoints];
+    std::ptrdiff_t pointOffset[HzOrder::CellGroup::kMaxPoints], edgeOffset[HzOrder::CellGroup::kMaxPoints];
+    order.forEachCellInside(dims, from, to, [&](const HzOrder::CellGroup& g) {
+      const int h = 1 << g.scaleLog2;
+      if (g.blockKey != key) {
+        key = g.blockKey;
+        for (int q = 0; q < g.fullPoints; ++q) {
+          const int cell = q / g.orientations;
+          const unsigned odd = g.odd[q % g.orientations];
+          GridPoint p = g.base;
+          for (int i = 0; i < g.freeAxes; ++i) p[static_cast<std::size_t>(g.axis[i])] += ((cell >> i) & 1) * 2 * h;
+          pointOffset[q] = edgeOffset[q] = 0;
+          for (int a = 0; a < 3; ++a) {
+            if ((odd >> a) & 1u) {
+              p[a] += h;
+              edgeOffset[q] += splitEdgeSigma(p, g.scaleLog2, a) * stride[a];
+            }
+            place[q][a] = p[a] - g.base[a];
+            pointOffset[q] += place[q][a] * stride[a];
+          }
+        }
+      }
+      // Whether the group's far cells' far edges lie inside the volume: then so do all its
+      // points' split edges, and no point needs its own check.
+      bool within = true;
+      for (int i = 0; i < g.freeAxes; ++i) {
+        const auto a = static_cast<std::size_t>(g.axis[i]);
+        within = within && g.base[a] + 4 * h < dims[a];
+      }
+      const std::ptrdiff_t baseIndex = g.base[0] + g.base[1] * stride[1] + g.base[2] * stride[2];
+      std::size_t vi[HzOrder::CellGroup::kMaxPoints];
+      std::int32_t pred[HzOrder::CellGroup::kMaxPoints * Components];
+      int n = 0;
+      if (within) [[likely]] {
+        for (int q = g.first; q < g.last; ++q, ++n) {
+          vi[n] = static_cast<std::size_t>(baseIndex + pointOffset[q]);
+          betweenInside(vi[n], edgeOffset[q], pred + Components * n);
+        }
+      } else {
+        for (int q = g.first; q < g.last; ++q, ++n) {
+          vi[n] = static_cast<std::size_t>(baseIndex + pointOffset[q]);
+          const unsigned odd = g.odd[q % g.orientations];
+          GridPoint p;
+          bool edgeInside = true;
+          for (int a = 0; a < 3; ++a) {
+            p[a] = g.base[a] + place[q][a];
+            edgeInside = edgeInside && (!((odd >> a) & 1u) || p[a] + h < dims[a]);
+          }
+          if (edgeInside) {
+            betweenInside(vi[n], edgeOffset[q], pred + Components * n);
+          } else {
+            const LebValues v = onShell(p, g.level, g.scaleLog2, odd);
+            std::copy_n(v.begin(), Components, pred + Components * n);
+          }
+        }
+      }
+      pointsOf(g.h, vi, pred, n);
+    });
   };
   end = std::min(end, order.size());  // a run of pages may reach past the grid's last index
   int level = -1;
@@ -152,79 +215,72 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
     while (order.levelBegin(level + 1) <= from) ++level;
     const std::uint64_t to = std::min(end, order.levelBegin(level + 1));
     if (level >= 0 && order.allInside(dims, from, to))
-      byCells(from, to);
+      byGroups(from, to);
     else
       byPoints(from, to);
     from = to;
   }
 }
 
+// walkChannel a value at a time: valueOf(h, vi, component, prediction), in index order.
 template <class ValueOf>
 void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
                 std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
-  if (inside.gradients)
-    walkChannel<3>(
-        order, dims, padding, inside,
-        [&](std::size_t vi, int k) {
-          return static_cast<std::int32_t>(inside.gradients[3 * vi + static_cast<std::size_t>(k)]);
-        },
-        begin, end, valueOf);
-  else if (inside.data8)
-    walkChannel<1>(
-        order, dims, padding, inside, [&](std::size_t vi, int) { return static_cast<std::int32_t>(inside.data8[vi]); },
-        begin, end, valueOf);
-  else
-    walkChannel<1>(
-        order, dims, padding, inside, [&](std::size_t vi, int) { return static_cast<std::int32_t>(inside.data16[vi]); },
-        begin, end, valueOf);
+  inside.visit([&](const auto* values) {
+    constexpr int Components = componentsOf<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>>();
+    walkChannel(order, dims, padding, inside, values, begin, end,
+                [&](std::uint64_t h, const std::size_t* vi, const std::int32_t* pred, int n) {
+                  for (int q = 0; q < n; ++q)
+                    for (int k = 0; k < Components; ++k)
+                      valueOf(h + static_cast<std::uint64_t>(q), vi[q], k, pred[Components * q + k]);
+                });
+  });
 }
 
-// Values of one level's part of a page as the decoder's walk finds them, reconstructed in runs:
-// the walk reads only coarser levels, so the deltas of a run can be decoded in one go
-// (LebPageReader::read, in the order next() would give them) and the values stored after.
-class DecodeRun {
+// The deltas of one segment of a page (a level's part of it), `values` of them, for the decoder's
+// walk n at a time: decoded ahead in chunks (LebPageReader::read, the values and errors of as many
+// next() calls), never past the segment's last.
+class DeltaFeed {
  public:
-  DecodeRun(const ChannelSpec& spec, const LebVolumeOut& out) : spec_(spec), out_(out) {}
-  // The value at output position `at` (the sample index, or 3 x sample + component) is its
-  // prediction plus the reader's next delta.
-  void add(std::size_t at, std::int32_t prediction, LebPageReader& reader) {
-    at_[n_] = at;
-    prediction_[n_] = prediction;
-    if (++n_ == kValues) flush(reader);
-  }
-  void flush(LebPageReader& reader) {
-    const std::span<std::int32_t> delta(delta_.data(), n_);
-    reader.read(delta);
-    auto store = [&](auto* to) {
-      using T = std::remove_pointer_t<decltype(to)>;
-      // reconstructSample's sum modulo 2^b, as the output type takes it: the samples are unsigned
-      // (their mask, in 8 or 16 bits), the gradients 8-bit two's complement in int8 (the
-      // conversion, C++20 [conv.integral]); parseLebStream admits no other channel.
-      if constexpr (std::is_signed_v<T>) {
-        for (std::size_t j = 0; j < n_; ++j) to[at_[j]] = static_cast<T>(prediction_[j] + delta[j]);
-      } else {
-        const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << spec_.valueBits) - 1);
-        for (std::size_t j = 0; j < n_; ++j)
-          to[at_[j]] = static_cast<T>(static_cast<std::uint32_t>(prediction_[j] + delta[j]) & mask);
-      }
-    };
-    if (spec_.kind == LebChannelKind::Gradients)
-      store(out_.gradients);
-    else if (out_.data8)
-      store(out_.data8);
-    else
-      store(out_.data16);
-    n_ = 0;
+  DeltaFeed(LebPageReader& reader, std::uint64_t values) : reader_(reader), left_(values) {}
+  // The next n deltas (n at most 72, a group of points' components).
+  const std::int32_t* take(std::size_t n) {
+    if (filled_ - at_ < n) [[unlikely]]
+      refill(n);
+    const std::int32_t* d = delta_.data() + at_;
+    at_ += n;
+    return d;
   }
 
  private:
+  void refill(std::size_t n) {
+    std::copy(delta_.begin() + static_cast<std::ptrdiff_t>(at_), delta_.begin() + static_cast<std::ptrdiff_t>(filled_),
+              delta_.begin());
+    filled_ -= at_;
+    at_ = 0;
+    const auto more = static_cast<std::size_t>(std::min<std::uint64_t>(kValues - filled_, left_));
+    reader_.read(std::span<std::int32_t>(delta_.data() + filled_, more));
+    left_ -= more;
+    filled_ += more;
+    if (filled_ < n) throw std::logic_error("LEB decode: the walk asked for more values than the segment holds");
+  }
   static constexpr std::size_t kValues = 768;  // 256 points of 3 components
-  const ChannelSpec& spec_;
-  const LebVolumeOut& out_;
-  std::size_t n_ = 0;
-  std::array<std::size_t, kValues> at_;
-  std::array<std::int32_t, kValues> prediction_, delta_;
+  LebPageReader& reader_;
+  std::uint64_t left_;
+  std::size_t at_ = 0, filled_ = 0;
+  std::array<std::int32_t, kValues> delta_;
 };
+
+// reconstructSample's sum modulo 2^b (b = valueBits), as the output type T takes it: the samples
+// unsigned by their mask, in 8 or 16 bits; the gradients 8-bit two's complement in int8 (the
+// conversion, C++20 [conv.integral]).
+template <class T>
+T storedValue(std::int32_t sum, std::uint32_t mask) {
+  if constexpr (std::is_signed_v<T>)
+    return static_cast<T>(sum);
+  else
+    return static_cast<T>(static_cast<std::uint32_t>(sum) & mask);
+}
 
 // The deltas of a run of pages, per stored page (the pages that hold a point of the volume).
 struct RunDeltas {
@@ -502,7 +558,9 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     // each stored page is reconstructed in parallel; a page's reader carries on where the previous
     // level left it, and is finished (its end checked) once the walk has left the page. Between
     // stored pages, the walk checks that no point of the volume lies in a page the stream lacks.
-    std::map<std::uint64_t, LebPageReader> open;
+    // A page is opened (its CRC checked) by the worker of its first segment, in parallel: a page
+    // has one segment a level, and the map changes only between the levels.
+    std::map<std::uint64_t, std::optional<LebPageReader>> open;
     for (int level = -1; level < s.grid.levelCount(); ++level) {
       padding.addLevel(level, inside);
       const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
@@ -510,21 +568,20 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
       // Segments of the level: a stored page's part of it, or a run of pages the stream lacks.
       struct Segment {
         std::uint64_t begin, end;
-        LebPageReader* reader;
+        std::optional<LebPageReader>* reader;  // null for pages the stream lacks
+        std::uint64_t page;
       };
       std::vector<Segment> segments;
       auto stored = std::lower_bound(ch.storedPage.begin(), ch.storedPage.end(), begin >> pb);
       for (std::uint64_t at = begin; at < end;) {
         if (stored != ch.storedPage.end() && (std::uint64_t{*stored} << pb) < end) {
           const std::uint64_t page = *stored, pageBegin = std::max(begin, page << pb);
-          if (at < pageBegin) segments.push_back({at, pageBegin, nullptr});
-          auto it = open.find(page);
-          if (it == open.end()) it = open.emplace(page, openPage(s, ch, page)).first;
+          if (at < pageBegin) segments.push_back({at, pageBegin, nullptr, 0});
           at = std::min(end, (page + 1) << pb);
-          segments.push_back({pageBegin, at, &it->second});
+          segments.push_back({pageBegin, at, &open[page], page});
           ++stored;
         } else {
-          segments.push_back({at, end, nullptr});
+          segments.push_back({at, end, nullptr, 0});
           at = end;
         }
       }
@@ -563,17 +620,26 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
                           [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(ch, h >> pb); });
                       return;
                     }
-                    DecodeRun run(spec, out);
-                    walkInside(order, s.dims, padding, inside, seg.begin, seg.end,
-                               [&](std::uint64_t, std::size_t vi, int k, std::int32_t pred) {
-                                 run.add(static_cast<std::size_t>(spec.components) * vi + static_cast<std::size_t>(k),
-                                         pred, *seg.reader);
-                               });
-                    run.flush(*seg.reader);
+                    if (!*seg.reader) seg.reader->emplace(openPage(s, ch, seg.page));
+                    // The segment's points inside the volume, one value a component each.
+                    DeltaFeed feed(**seg.reader, order.countInside(s.dims, seg.begin, seg.end) *
+                                                     static_cast<std::uint64_t>(spec.components));
+                    const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << spec.valueBits) - 1);
+                    withChannel(out, ch.kind, [&](auto* target) {
+                      using T = std::remove_pointer_t<decltype(target)>;
+                      constexpr std::size_t kComponents = componentsOf<T>();
+                      walkChannel(order, s.dims, padding, inside, static_cast<const T*>(target), seg.begin, seg.end,
+                                  [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
+                                    const std::int32_t* delta = feed.take(kComponents * static_cast<std::size_t>(n));
+                                    for (int q = 0; q < n; ++q)
+                                      for (std::size_t k = 0; k < kComponents; ++k, ++pred, ++delta)
+                                        target[kComponents * vi[q] + k] = storedValue<T>(*pred + *delta, mask);
+                                  });
+                    });
                   });
                 });
       for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
-        finishPage(it->second, it->second.valuesRead() / static_cast<std::size_t>(spec.components), ch, it->first);
+        finishPage(*it->second, it->second->valuesRead() / static_cast<std::size_t>(spec.components), ch, it->first);
         it = open.erase(it);
       }
     }

@@ -16,10 +16,7 @@ std::string pageName(const LebChannel& c, std::uint64_t page) {
 }  // namespace
 
 std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pageBits, std::uint64_t page) {
-  std::uint64_t n = 0;
-  order.forEachInside(dims, page << pageBits, (page + 1) << pageBits,
-                      [&](std::uint64_t, const GridPoint&, int, int, unsigned) { ++n; });
-  return n;
+  return order.countInside(dims, page << pageBits, (page + 1) << pageBits);
 }
 
 StreamError pageNotStored(const LebChannel& c, std::uint64_t page) {

@@ -1,6 +1,7 @@
 #include "reference/leb/hz_order.h"
 
 #include <algorithm>
+#include <map>
 #include <random>
 #include <vector>
 
@@ -133,11 +134,11 @@ TEST(HzOrder, ForEachInsideIsTheWalkFilteredByTheBox) {
   }
 }
 
-// forEachCellInside gives, cell by cell, the points of a range wholly inside the box that the
+// forEachCellInside gives, by groups of cells, the points of a range wholly inside the box that the
 // cursor (the inverse of the index, point by point) walks: the same indices, points and odd axes,
 // in the same order. Ranges of pages within one level and across levels, on grids and boxes where
 // allInside holds.
-TEST(HzOrder, ForEachCellInsideGivesTheCursorsPointsByCells) {
+TEST(HzOrder, ForEachCellInsideGivesTheCursorsPointsByGroupsOfCells) {
   std::mt19937 rng(44);
   for (int k : {1, 3, 5}) {
     const LebGrid g = makeLebGrid(k);
@@ -157,18 +158,36 @@ TEST(HzOrder, ForEachCellInsideGivesTheCursorsPointsByCells) {
       for (HzCursor c(order, begin); !c.done() && c.index() < end; c.next())
         walked.push_back({c.index(), static_cast<std::uint64_t>(c.point()[0]), static_cast<std::uint64_t>(c.point()[1]),
                           static_cast<std::uint64_t>(c.point()[2]), c.oddAxes()});
-      order.forEachCellInside(
-          dims, begin, end,
-          [&](std::uint64_t h, const GridPoint& base, int level, int s, const unsigned* odd, int first, int last) {
-            ASSERT_LT(first, last);
-            for (int o = first; o < last; ++o, ++h) {
-              GridPoint q = base;
-              for (int a = 0; a < 3; ++a) q[a] += ((odd[o] >> a) & 1u) ? (1 << s) : 0;
-              ASSERT_EQ(classifyPoint(g, q).level, level);
-              given.push_back({h, static_cast<std::uint64_t>(q[0]), static_cast<std::uint64_t>(q[1]),
-                               static_cast<std::uint64_t>(q[2]), odd[o]});
-            }
-          });
+      // The walk's tables are made once a block key: the groups of one key share their level, their
+      // points' odd axes, their free axes and their coordinates on the others.
+      std::map<int, std::vector<int>> byKey;
+      order.forEachCellInside(dims, begin, end, [&](const HzOrder::CellGroup& grp) {
+        std::vector<int> shape{grp.level, grp.scaleLog2, grp.orientations, grp.freeAxes, grp.fullPoints};
+        for (int o = 0; o < grp.orientations; ++o) shape.push_back(static_cast<int>(grp.odd[o]));
+        unsigned free = 0;
+        for (int i = 0; i < grp.freeAxes; ++i) {
+          shape.push_back(grp.axis[i]);
+          free |= 1u << grp.axis[i];
+        }
+        for (int a = 0; a < 3; ++a)
+          if (!((free >> a) & 1u)) shape.push_back(grp.base[a]);
+        const auto [it, isNew] = byKey.emplace(grp.blockKey, shape);
+        ASSERT_EQ(it->second, shape) << "block key " << grp.blockKey;
+        ASSERT_LT(grp.first, grp.last);
+        ASSERT_LE(grp.last, grp.fullPoints);
+        ASSERT_LE(grp.fullPoints, HzOrder::CellGroup::kMaxPoints);
+        std::uint64_t h = grp.h;
+        for (int q = grp.first; q < grp.last; ++q, ++h) {
+          const int cell = q / grp.orientations;
+          const unsigned odd = grp.odd[q % grp.orientations];
+          GridPoint pt = grp.base;
+          for (int i = 0; i < grp.freeAxes; ++i) pt[grp.axis[i]] += ((cell >> i) & 1) << (grp.scaleLog2 + 1);
+          for (int a = 0; a < 3; ++a) pt[a] += ((odd >> a) & 1u) ? (1 << grp.scaleLog2) : 0;
+          ASSERT_EQ(classifyPoint(g, pt).level, grp.level);
+          given.push_back({h, static_cast<std::uint64_t>(pt[0]), static_cast<std::uint64_t>(pt[1]),
+                           static_cast<std::uint64_t>(pt[2]), odd});
+        }
+      });
       EXPECT_EQ(given, walked) << "k " << k << ", box " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", [" << begin
                                << ", " << end << ")";
     }
@@ -177,7 +196,8 @@ TEST(HzOrder, ForEachCellInsideGivesTheCursorsPointsByCells) {
 }
 
 // allInside is true only for ranges whose every point lies inside the box (the full walk checks
-// each), always for a box that holds the grid, and for most pages of a box that cuts it.
+// each), always for a box that holds the grid, and for most pages of a box that cuts it; countInside
+// counts the points the walk finds inside.
 TEST(HzOrder, AllInsideHoldsOnlyForRangesWhollyInsideTheBox) {
   std::mt19937 rng(31);
   for (int k : {0, 1, 3, 5}) {
@@ -197,9 +217,17 @@ TEST(HzOrder, AllInsideHoldsOnlyForRangesWhollyInsideTheBox) {
         end = begin + (std::uint64_t{1} << p);
       }
       bool all = true;
-      for (HzCursor c(order, begin); !c.done() && c.index() < end; c.next())
-        all = all && c.point()[0] < dims[0] && c.point()[1] < dims[1] && c.point()[2] < dims[2];
+      std::uint64_t counted = 0;
+      for (HzCursor c(order, begin); !c.done() && c.index() < end; c.next()) {
+        const bool in = c.point()[0] < dims[0] && c.point()[1] < dims[1] && c.point()[2] < dims[2];
+        all = all && in;
+        counted += in ? 1 : 0;
+      }
       const bool claimed = order.allInside(dims, begin, end);
+      // countInside, by allInside where it holds and by the walk elsewhere, counts what the cursor
+      // finds inside the box.
+      EXPECT_EQ(order.countInside(dims, begin, end), counted) << "k " << k << ", box " << dims[0] << "x" << dims[1]
+                                                              << "x" << dims[2] << ", [" << begin << ", " << end << ")";
       EXPECT_FALSE(claimed && !all) << "k " << k << ", box " << dims[0] << "x" << dims[1] << "x" << dims[2] << ", ["
                                     << begin << ", " << end << ")";
       if (dims == std::array<int, 3>{n, n, n}) {
