@@ -1,6 +1,7 @@
 #include "reference/leb/lead1_coder.h"
 
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 
 #include "reference/common/byte_stream.h"
@@ -147,16 +148,8 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
     while (i < out.size()) {
       const std::uint32_t e = decoder_->fastEntry(context, in.peek(Lead1Decoder::kFastBits));
       if (e == 0) break;
-      if (e & Lead1Decoder::kPair) {
-        if (i + 1 == out.size()) break;  // room for one value: the table path takes it
-        out[i] = Lead1Decoder::pairFirst(e);
-        out[i + 1] = Lead1Decoder::pairSecond(e);
-        i += 2;
-      } else {
-        out[i++] = Lead1Decoder::deltaOf(e, in);
-      }
-      in.skip(static_cast<int>(e & 31));
-      context = Lead1Decoder::symbolOf(e);
+      if ((e & Lead1Decoder::kPair) && i + 1 == out.size()) break;  // room for one: the table path takes it
+      fastStep(e, in, context, out.data(), i);
     }
     if (in.overrun()) [[unlikely]]
       for (std::size_t j = start; j < i; ++j) (void)next();  // replays the run to throw at its value
@@ -165,6 +158,54 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
     read_ += i - start;
     if (i < out.size()) out[i++] = nextByTable();
   }
+}
+
+void Lead1PageReader::readBoth(Lead1PageReader& a, std::span<std::int32_t> outA, Lead1PageReader& b,
+                               std::span<std::int32_t> outB) {
+  std::size_t i = 0, j = 0;
+  std::exception_ptr bFailed;  // b's error waits for the rest of a, whose own error comes first
+  // Runs of one-lookup values of both pages on local copies, while each has room for a pair; a run
+  // ends where either page's next value needs the table path.
+  while (i + 1 < outA.size() && j + 1 < outB.size()) {
+    BitReader inA = a.in_, inB = b.in_;
+    int contextA = a.context_, contextB = b.context_;
+    const std::size_t i0 = i, j0 = j;
+    bool tableA = false, tableB = false;
+    while (i + 1 < outA.size() && j + 1 < outB.size()) {
+      const std::uint32_t ea = a.decoder_->fastEntry(contextA, inA.peek(Lead1Decoder::kFastBits));
+      const std::uint32_t eb = b.decoder_->fastEntry(contextB, inB.peek(Lead1Decoder::kFastBits));
+      if (ea == 0 || eb == 0) {
+        tableA = ea == 0;
+        tableB = eb == 0;
+        break;
+      }
+      fastStep(ea, inA, contextA, outA.data(), i);
+      fastStep(eb, inB, contextB, outB.data(), j);
+    }
+    if (inA.overrun() || inB.overrun()) {  // read() from the run's start names the value
+      i = i0;
+      j = j0;
+      break;
+    }
+    a.in_ = inA;
+    a.context_ = contextA;
+    a.read_ += i - i0;
+    b.in_ = inB;
+    b.context_ = contextB;
+    b.read_ += j - j0;
+    if (tableA) outA[i++] = a.nextByTable();
+    if (tableB) {
+      try {
+        outB[j++] = b.nextByTable();
+      } catch (...) {
+        bFailed = std::current_exception();
+        break;
+      }
+    }
+  }
+  a.read(outA.subspan(i));
+  if (bFailed) std::rethrow_exception(bFailed);
+  b.read(outB.subspan(j));
 }
 
 void Lead1PageReader::fail(const std::string& detail) const {

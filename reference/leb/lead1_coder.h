@@ -158,11 +158,28 @@ class Lead1PageReader {
   // The next out.size() values: the same values and errors as that many next() calls, faster (the
   // bit buffer stays in registers between values that the one lookup decodes).
   void read(std::span<std::int32_t> out);
+  // a.read(outA), then b.read(outB): the same values and errors (a's first), faster on one thread.
+  // Each reader's lookups form a chain (a value's length decides where the next one starts); the
+  // two pages' chains are independent, so they run interleaved.
+  static void readBoth(Lead1PageReader& a, std::span<std::int32_t> outA, Lead1PageReader& b,
+                       std::span<std::int32_t> outB);
   void finish() const;  // throws StreamError unless only the zero padding of the last byte is left
   std::size_t valuesRead() const { return read_; }
 
  private:
   std::int32_t nextByTable();  // the code by its table, then sign and magnitude
+  // The value (or pair) of a nonzero fast entry e into out[i] (and out[i + 1]), past its bits.
+  static void fastStep(std::uint32_t e, BitReader& in, int& context, std::int32_t* out, std::size_t& i) {
+    if (e & Lead1Decoder::kPair) {
+      out[i] = Lead1Decoder::pairFirst(e);
+      out[i + 1] = Lead1Decoder::pairSecond(e);
+      i += 2;
+    } else {
+      out[i++] = Lead1Decoder::deltaOf(e, in);
+    }
+    in.skip(static_cast<int>(e & 31));
+    context = Lead1Decoder::symbolOf(e);
+  }
   [[noreturn]] void fail(const std::string& detail) const;
   const Lead1Decoder* decoder_;
   std::string_view page_;

@@ -237,38 +237,21 @@ void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& paddi
   });
 }
 
-// The deltas of one segment of a page (a level's part of it), `values` of them, for the decoder's
-// walk n at a time: decoded ahead in chunks (LebPageReader::read, the values and errors of as many
-// next() calls), never past the segment's last.
-class DeltaFeed {
- public:
-  DeltaFeed(LebPageReader& reader, std::uint64_t values) : reader_(reader), left_(values) {}
-  // The next n deltas (n at most 72, a group of points' components).
-  const std::int32_t* take(std::size_t n) {
-    if (filled_ - at_ < n) [[unlikely]]
-      refill(n);
-    const std::int32_t* d = delta_.data() + at_;
-    at_ += n;
-    return d;
+// The deltas of one segment of a page (a level's part of it, indices [begin, end)), decoded whole
+// before its walk: `values` of them, the segment's points inside the volume times the components.
+struct SegmentDeltas {
+  LebPageReader* reader = nullptr;
+  std::uint64_t begin = 0, end = 0;
+  std::size_t values = 0;
+  std::unique_ptr<std::int32_t[]> storage;
+  void allocate(LebPageReader& from, std::uint64_t first, std::uint64_t last, std::uint64_t count) {
+    reader = &from;
+    begin = first;
+    end = last;
+    values = static_cast<std::size_t>(count);
+    storage = std::make_unique_for_overwrite<std::int32_t[]>(values);
   }
-
- private:
-  void refill(std::size_t n) {
-    std::copy(delta_.begin() + static_cast<std::ptrdiff_t>(at_), delta_.begin() + static_cast<std::ptrdiff_t>(filled_),
-              delta_.begin());
-    filled_ -= at_;
-    at_ = 0;
-    const auto more = static_cast<std::size_t>(std::min<std::uint64_t>(kValues - filled_, left_));
-    reader_.read(std::span<std::int32_t>(delta_.data() + filled_, more));
-    left_ -= more;
-    filled_ += more;
-    if (filled_ < n) throw std::logic_error("LEB decode: the walk asked for more values than the segment holds");
-  }
-  static constexpr std::size_t kValues = 768;  // 256 points of 3 components
-  LebPageReader& reader_;
-  std::uint64_t left_;
-  std::size_t at_ = 0, filled_ = 0;
-  std::array<std::int32_t, kValues> delta_;
+  std::span<std::int32_t> deltas() const { return {storage.get(), values}; }
 };
 
 // reconstructSample's sum modulo 2^b (b = valueBits), as the output type T takes it: the samples
@@ -612,30 +595,49 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
       inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, part,
                 [&](int first, int last) {
                   const int from = first * perBatch, to = std::min(static_cast<int>(segments.size()), last * perBatch);
-                  parallelFor(to - from, threads, [&](int i) {
-                    const Segment& seg = segments[static_cast<std::size_t>(from + i)];
-                    if (!seg.reader) {  // pages the stream lacks: no point of the volume may lie in them
-                      walkInside(
-                          order, s.dims, padding, inside, seg.begin, seg.end,
-                          [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(ch, h >> pb); });
-                      return;
+                  // Two segments an item: their pages' deltas are decoded together (readBoth).
+                  parallelFor((to - from + 1) / 2, threads, [&](int item) {
+                    const int at = from + 2 * item, itemEnd = std::min(to, at + 2);
+                    SegmentDeltas work[2];
+                    int n = 0;
+                    for (int k = at; k < itemEnd; ++k) {
+                      const Segment& seg = segments[static_cast<std::size_t>(k)];
+                      if (!seg.reader) {  // pages the stream lacks: no point of the volume may lie in them
+                        walkInside(
+                            order, s.dims, padding, inside, seg.begin, seg.end,
+                            [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(ch, h >> pb); });
+                        continue;
+                      }
+                      if (!*seg.reader) seg.reader->emplace(openPage(s, ch, seg.page));
+                      // The segment's points inside the volume, one value a component each.
+                      work[n++].allocate(
+                          **seg.reader, seg.begin, seg.end,
+                          order.countInside(s.dims, seg.begin, seg.end) * static_cast<std::uint64_t>(spec.components));
                     }
-                    if (!*seg.reader) seg.reader->emplace(openPage(s, ch, seg.page));
-                    // The segment's points inside the volume, one value a component each.
-                    DeltaFeed feed(**seg.reader, order.countInside(s.dims, seg.begin, seg.end) *
-                                                     static_cast<std::uint64_t>(spec.components));
+                    if (n == 2)
+                      LebPageReader::readBoth(*work[0].reader, work[0].deltas(), *work[1].reader, work[1].deltas());
+                    else if (n == 1)
+                      work[0].reader->read(work[0].deltas());
                     const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << spec.valueBits) - 1);
-                    withChannel(out, ch.kind, [&](auto* target) {
-                      using T = std::remove_pointer_t<decltype(target)>;
-                      constexpr std::size_t kComponents = componentsOf<T>();
-                      walkChannel(order, s.dims, padding, inside, static_cast<const T*>(target), seg.begin, seg.end,
-                                  [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
-                                    const std::int32_t* delta = feed.take(kComponents * static_cast<std::size_t>(n));
-                                    for (int q = 0; q < n; ++q)
-                                      for (std::size_t k = 0; k < kComponents; ++k, ++pred, ++delta)
-                                        target[kComponents * vi[q] + k] = storedValue<T>(*pred + *delta, mask);
-                                  });
-                    });
+                    for (int k = 0; k < n; ++k)
+                      withChannel(out, ch.kind, [&](auto* target) {
+                        using T = std::remove_pointer_t<decltype(target)>;
+                        constexpr std::size_t kComponents = componentsOf<T>();
+                        const std::span<const std::int32_t> all = work[k].deltas();
+                        std::size_t taken = 0;
+                        walkChannel(order, s.dims, padding, inside, static_cast<const T*>(target), work[k].begin,
+                                    work[k].end,
+                                    [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int m) {
+                                      const std::size_t values = kComponents * static_cast<std::size_t>(m);
+                                      if (values > all.size() - taken)
+                                        throw std::logic_error("LEB decode: the walk met more points than countInside");
+                                      const std::int32_t* delta = all.data() + taken;
+                                      taken += values;
+                                      for (int q = 0; q < m; ++q)
+                                        for (std::size_t c = 0; c < kComponents; ++c, ++pred, ++delta)
+                                          target[kComponents * vi[q] + c] = storedValue<T>(*pred + *delta, mask);
+                                    });
+                      });
                   });
                 });
       for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {

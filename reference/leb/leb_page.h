@@ -35,6 +35,15 @@ class LebPageReader {
   void read(std::span<std::int32_t> out) {
     std::visit([&](auto& r) { r.read(out); }, r_);
   }
+  // a.read(outA), then b.read(outB): the same values and errors; two lead-1 pages are read
+  // interleaved (Lead1PageReader::readBoth).
+  static void readBoth(LebPageReader& a, std::span<std::int32_t> outA, LebPageReader& b, std::span<std::int32_t> outB) {
+    Lead1PageReader* la = std::get_if<Lead1PageReader>(&a.r_);
+    Lead1PageReader* lb = std::get_if<Lead1PageReader>(&b.r_);
+    if (la && lb) return Lead1PageReader::readBoth(*la, outA, *lb, outB);
+    a.read(outA);
+    b.read(outB);
+  }
   void finish() const {
     std::visit([](const auto& r) { r.finish(); }, r_);
   }

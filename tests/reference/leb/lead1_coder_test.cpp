@@ -110,6 +110,96 @@ TEST_P(Lead1RoundTrip, RandomDeltasIncludingTheExtremes) {
   }
 }
 
+// readBoth against a.read then b.read, one after the other: the same values, in the same places
+// of both pages (next() then goes on from there alike), and the same error where either page is
+// cut short (a's first). Pages of the same code, in prefixes of every length class (one value, room
+// for a pair's first only, a run, the whole page).
+TEST_P(Lead1RoundTrip, ReadBothEqualsTheTwoReadsOneAfterTheOther) {
+  const int bits = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(100 + bits));
+  std::vector<std::vector<std::int32_t>> pages(4);
+  Lead1Counter counter(bits);
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    // Pages of small deltas (pairs), and pages of mostly zeros with rare wide deltas and the extreme
+    // -2^(b-1), whose long codes and symbol b take the table path.
+    for (int v = 0; v < 2000; ++v) {
+      const bool rare = i % 2 == 1 && rng() % 16 == 0;
+      const int mag = static_cast<int>(rng() % static_cast<unsigned>(rare ? bits - 1 : 3));
+      std::int32_t d = static_cast<std::int32_t>((rng() % (1u << mag)) * ((rng() & 1) ? 1 : -1));
+      if (i % 2 == 1 && !rare) d = 0;
+      if (rare && rng() % 8 == 0) d = -(1 << (bits - 1));
+      pages[i].push_back(d);
+    }
+    counter.add(pages[i]);
+  }
+  const Lead1Code code = counter.code();
+  const Lead1Encoder enc(code);
+  const Lead1Decoder dec(code);
+  std::vector<std::string> bytes;
+  for (const auto& p : pages) {
+    BitWriter w;
+    enc.encodePage(p, w);
+    bytes.push_back(w.finish());
+  }
+  struct Outcome {
+    std::vector<std::int32_t> a, b, nextA, nextB;
+    std::string error;
+    bool operator==(const Outcome&) const = default;
+  };
+  auto run = [&](std::string_view pa, std::string_view pb, std::size_t na, std::size_t nb, bool both) {
+    Lead1PageReader ra(dec, pa, 0, "page a"), rb(dec, pb, 0, "page b");
+    Outcome o;
+    o.a.resize(na);
+    o.b.resize(nb);
+    try {
+      if (both) {
+        Lead1PageReader::readBoth(ra, o.a, rb, o.b);
+      } else {
+        ra.read(o.a);
+        rb.read(o.b);
+      }
+      for (int i = 0; i < 5; ++i) {
+        o.nextA.push_back(ra.next());
+        o.nextB.push_back(rb.next());
+      }
+    } catch (const StreamError& e) {
+      o = Outcome{};  // what an error leaves in the outputs is not part of the contract
+      o.error = e.what();
+    }
+    return o;
+  };
+  int errors = 0;
+  for (std::size_t x = 0; x < pages.size(); ++x)
+    for (std::size_t y = 0; y < pages.size(); ++y)
+      for (std::size_t na : {std::size_t{1}, std::size_t{2}, std::size_t{777}, std::size_t{1995}})
+        for (std::size_t nb : {std::size_t{1}, std::size_t{2}, std::size_t{1000}, std::size_t{1995}}) {
+          SCOPED_TRACE("pages " + std::to_string(x) + ", " + std::to_string(y) + ": " + std::to_string(na) + " and " +
+                       std::to_string(nb) + " values");
+          const Outcome whole = run(bytes[x], bytes[y], na, nb, true);
+          EXPECT_EQ(whole, run(bytes[x], bytes[y], na, nb, false));
+          EXPECT_EQ(whole.error, "");
+          EXPECT_TRUE(std::equal(whole.a.begin(), whole.a.end(), pages[x].begin()));
+        }
+  // Cut short, at fifteen places of each page: one page, the other, or both fail, at a value of
+  // the one-lookup path or of the table path; a's error comes first.
+  for (std::size_t x = 0; x < pages.size(); ++x)
+    for (std::size_t y = 0; y < pages.size(); ++y)
+      for (std::size_t t = 0; t < 16; ++t)
+        for (std::size_t u = 0; u < 16; ++u) {
+          if (t == 0 && u == 0) continue;
+          SCOPED_TRACE("pages " + std::to_string(x) + ", " + std::to_string(y) + " cut at " + std::to_string(t) +
+                       "/16 and " + std::to_string(u) + "/16");
+          const std::string_view pa = std::string_view(bytes[x]).substr(
+                                     0, t == 0 ? bytes[x].size() : bytes[x].size() * t / 16),
+                                 pb = std::string_view(bytes[y]).substr(
+                                     0, u == 0 ? bytes[y].size() : bytes[y].size() * u / 16);
+          const Outcome cut = run(pa, pb, pages[x].size(), pages[y].size(), true);
+          EXPECT_EQ(cut, run(pa, pb, pages[x].size(), pages[y].size(), false));
+          errors += cut.error.empty() ? 0 : 1;
+        }
+  EXPECT_GT(errors, 100) << "too few of the cut pages failed: the errors were not compared";
+}
+
 INSTANTIATE_TEST_SUITE_P(Bits, Lead1RoundTrip, ::testing::Values(8, 16));
 
 class Lead1Corrupt : public ::testing::Test {
