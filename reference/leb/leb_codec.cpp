@@ -103,11 +103,11 @@ InsideValues insideOf(const Span& v, LebChannelKind kind) {
 // (HzOrder::allInside: nearly every page of a volume) goes by groups of cells
 // (HzOrder::forEachCellInside), with the per-point work cut down (issue 18, goal 3): a point's
 // volume index and its edge's offset lie at the same offsets from its group's corner in every group
-// of a block, so they come from tables made at the block's first group, and a group whose split
-// edges all lie inside the volume (its far cells' far edges do) is predicted without a check per
-// point and handed over in one call. The other parts, and the other groups, go a point at a time
-// (HzOrder::forEachInside). The same points in the same order, with the same predictions, either
-// way.
+// of a block, so they come from tables made at the block's first group; a group whose split edges
+// all lie inside the volume (its far cells' far edges do) is predicted without a check per point,
+// the others check each point, and a group's points are handed over in one call. The other parts
+// go a point at a time (HzOrder::forEachInside). The same points in the same order, with the same
+// predictions, either way.
 template <class T, class PointsOf>
 void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
                  const T* values, std::uint64_t begin, std::uint64_t end, PointsOf&& pointsOf) {
@@ -126,24 +126,30 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
     const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
     for (int k = 0; k < Components; ++k) pred[k] = predictMidpoint(read(a, k), read(b, k));
   };
+  // The prediction of point p of a level (not a root corner) at volume index vi, whose split edge's
+  // endpoints lie at vi +- off where they are inside the volume: between them where both are (the
+  // far one is p + h on every odd axis), else from the shell.
+  auto predictAt = [&](const GridPoint& p, std::size_t vi, std::ptrdiff_t off, int level, int scaleLog2, unsigned odd,
+                       std::int32_t* pred) {
+    bool edgeInside = true;
+    for (int a = 0; a < 3; ++a) edgeInside = edgeInside && (!((odd >> a) & 1u) || p[a] + (1 << scaleLog2) < dims[a]);
+    if (edgeInside) {
+      betweenInside(vi, off, pred);
+    } else {
+      const LebValues v = onShell(p, level, scaleLog2, odd);
+      std::copy_n(v.begin(), Components, pred);
+    }
+  };
   auto atPoint = [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
     const std::size_t vi = volumeIndex(p, dims);
-    LebValues pred{0, 0, 0};
+    std::int32_t pred[3] = {0, 0, 0};
     if (level >= 0) {
-      const int step = 1 << scaleLog2;
       std::ptrdiff_t off = 0;
-      bool within = true;
       for (int a = 0; a < 3; ++a)
-        if ((odd >> a) & 1u) {
-          within = within && p[a] + step < dims[a];
-          off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
-        }
-      if (within)
-        betweenInside(vi, off, pred.data());
-      else
-        pred = onShell(p, level, scaleLog2, odd);
+        if ((odd >> a) & 1u) off += splitEdgeSigma(p, scaleLog2, a) * stride[a];
+      predictAt(p, vi, off, level, scaleLog2, odd, pred);
     }
-    pointsOf(h, &vi, pred.data(), 1);
+    pointsOf(h, &vi, pred, 1);
   };
   auto byPoints = [&](std::uint64_t from, std::uint64_t to) { order.forEachInside(dims, from, to, atPoint); };
   auto byGroups = [&](std::uint64_t from, std::uint64_t to) {
@@ -191,19 +197,8 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
       } else {
         for (int q = g.first; q < g.last; ++q, ++n) {
           vi[n] = static_cast<std::size_t>(baseIndex + pointOffset[q]);
-          const unsigned odd = g.odd[q % g.orientations];
-          GridPoint p;
-          bool edgeInside = true;
-          for (int a = 0; a < 3; ++a) {
-            p[a] = g.base[a] + place[q][a];
-            edgeInside = edgeInside && (!((odd >> a) & 1u) || p[a] + h < dims[a]);
-          }
-          if (edgeInside) {
-            betweenInside(vi[n], edgeOffset[q], pred + Components * n);
-          } else {
-            const LebValues v = onShell(p, g.level, g.scaleLog2, odd);
-            std::copy_n(v.begin(), Components, pred + Components * n);
-          }
+          const GridPoint p{g.base[0] + place[q][0], g.base[1] + place[q][1], g.base[2] + place[q][2]};
+          predictAt(p, vi[n], edgeOffset[q], g.level, g.scaleLog2, g.odd[q % g.orientations], pred + Components * n);
         }
       }
       pointsOf(g.h, vi, pred, n);
