@@ -153,9 +153,7 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
     }
     if (in.overrun()) [[unlikely]]
       for (std::size_t j = start; j < i; ++j) (void)next();  // replays the run to throw at its value
-    in_ = in;
-    context_ = context;
-    read_ += i - start;
+    commitRun(in, context, i - start);
     if (i < out.size()) out[i++] = nextByTable();
   }
 }
@@ -187,12 +185,8 @@ void Lead1PageReader::readBoth(Lead1PageReader& a, std::span<std::int32_t> outA,
       j = j0;
       break;
     }
-    a.in_ = inA;
-    a.context_ = contextA;
-    a.read_ += i - i0;
-    b.in_ = inB;
-    b.context_ = contextB;
-    b.read_ += j - j0;
+    a.commitRun(inA, contextA, i - i0);
+    b.commitRun(inB, contextB, j - j0);
     if (tableA) outA[i++] = a.nextByTable();
     if (tableB) {
       try {

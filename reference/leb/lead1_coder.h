@@ -180,6 +180,12 @@ class Lead1PageReader {
     in.skip(static_cast<int>(e & 31));
     context = Lead1Decoder::symbolOf(e);
   }
+  // Takes over the state after a run of `values` one-lookup values decoded on local copies.
+  void commitRun(const BitReader& in, int context, std::size_t values) {
+    in_ = in;
+    context_ = context;
+    read_ += values;
+  }
   [[noreturn]] void fail(const std::string& detail) const;
   const Lead1Decoder* decoder_;
   std::string_view page_;

@@ -260,6 +260,30 @@ T storedValue(std::int32_t sum, std::uint32_t mask) {
     return static_cast<T>(static_cast<std::uint32_t>(sum) & mask);
 }
 
+// Writes the values of a segment whose deltas `d` holds (decoded whole): each point's prediction
+// plus its delta, as the output type takes the sum (storedValue), in the walk's order.
+void reconstructSegment(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
+                        const LebVolumeOut& out, LebChannelKind kind, int valueBits, const SegmentDeltas& d) {
+  const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << valueBits) - 1);
+  withChannel(out, kind, [&](auto* target) {
+    using T = std::remove_pointer_t<decltype(target)>;
+    constexpr std::size_t kComponents = componentsOf<T>();
+    const std::span<const std::int32_t> all = d.deltas();
+    std::size_t taken = 0;
+    walkChannel(order, dims, padding, inside, static_cast<const T*>(target), d.begin, d.end,
+                [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
+                  const std::size_t values = kComponents * static_cast<std::size_t>(n);
+                  if (values > all.size() - taken)
+                    throw std::logic_error("LEB decode: the walk met more points than countInside");
+                  const std::int32_t* delta = all.data() + taken;
+                  taken += values;
+                  for (int q = 0; q < n; ++q)
+                    for (std::size_t c = 0; c < kComponents; ++c, ++pred, ++delta)
+                      target[kComponents * vi[q] + c] = storedValue<T>(*pred + *delta, mask);
+                });
+  });
+}
+
 // The deltas of a run of pages, per stored page (the pages that hold a point of the volume).
 struct RunDeltas {
   std::vector<std::uint32_t> storedPage;
@@ -613,26 +637,8 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
                       LebPageReader::readBoth(*work[0].reader, work[0].deltas(), *work[1].reader, work[1].deltas());
                     else if (n == 1)
                       work[0].reader->read(work[0].deltas());
-                    const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << spec.valueBits) - 1);
                     for (int k = 0; k < n; ++k)
-                      withChannel(out, ch.kind, [&](auto* target) {
-                        using T = std::remove_pointer_t<decltype(target)>;
-                        constexpr std::size_t kComponents = componentsOf<T>();
-                        const std::span<const std::int32_t> all = work[k].deltas();
-                        std::size_t taken = 0;
-                        walkChannel(order, s.dims, padding, inside, static_cast<const T*>(target), work[k].begin,
-                                    work[k].end,
-                                    [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int m) {
-                                      const std::size_t values = kComponents * static_cast<std::size_t>(m);
-                                      if (values > all.size() - taken)
-                                        throw std::logic_error("LEB decode: the walk met more points than countInside");
-                                      const std::int32_t* delta = all.data() + taken;
-                                      taken += values;
-                                      for (int q = 0; q < m; ++q)
-                                        for (std::size_t c = 0; c < kComponents; ++c, ++pred, ++delta)
-                                          target[kComponents * vi[q] + c] = storedValue<T>(*pred + *delta, mask);
-                                    });
-                      });
+                      reconstructSegment(order, s.dims, padding, inside, out, ch.kind, spec.valueBits, work[k]);
                   });
                 });
       for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
