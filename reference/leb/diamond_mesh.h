@@ -139,15 +139,43 @@ inline GridPoint evenMidpoint(const GridPoint& a, const GridPoint& b) {
   return {(a[0] + b[0]) >> 1, (a[1] + b[1]) >> 1, (a[2] + b[2]) >> 1};
 }
 
-// Completes the visit v of v.t: its longest edge, and its split vertex when the midpoint of that
-// edge is a grid point (the edge's coordinate sums are even).
-inline void completeVisit(LeafVisit& v) {
-  v.longest = longestEdge(v.t);
+// The longest edge of a half that toHalf made, whose creator (the split vertex it was cut at) is in
+// slot creatorSlot: the longest of the three edges between its other corners, the same pair as
+// longestEdge(t). An edge at the split vertex is never a half's longest: bisection is defined by
+// the geometry alone, and three bisections below a tetrahedron of the hierarchy its descendants
+// are its own shape at half the size (three levels per scale, leb_grid.h), so the tetrahedra of
+// the first three levels below the roots, with their creators, show every case there is;
+// diamond_mesh_test.cpp compares this with longestEdge on every half of a grid of nine levels.
+inline std::pair<int, int> longestEdgeOfHalf(const Tetrahedron& t, int creatorSlot) {
+  static constexpr std::array<std::array<int, 3>, 4> kOthers{{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
+  const std::array<int, 3>& o = kOthers[static_cast<std::size_t>(creatorSlot)];
+  auto length2 = [&](int i, int j) {
+    const GridPoint &a = t.v[static_cast<std::size_t>(i)], &b = t.v[static_cast<std::size_t>(j)];
+    const long long dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    return dx * dx + dy * dy + dz * dz;
+  };
+  // Pairs in longestEdge's order, the first of equal lengths kept (they are never equal).
+  std::pair<int, int> e{o[0], o[1]};
+  long long best = length2(o[0], o[1]);
+  if (const long long l = length2(o[0], o[2]); l > best) {
+    best = l;
+    e = {o[0], o[2]};
+  }
+  if (length2(o[1], o[2]) > best) e = {o[1], o[2]};
+  return e;
+}
+
+// Completes the visit v of v.t whose longest edge is `longest`: its split vertex when the midpoint
+// of that edge is a grid point (the edge's coordinate sums are even).
+inline void completeVisitWith(LeafVisit& v, std::pair<int, int> longest) {
+  v.longest = longest;
   const GridPoint &a = v.t.v[static_cast<std::size_t>(v.longest.first)],
                   &b = v.t.v[static_cast<std::size_t>(v.longest.second)];
   v.hasSplitVertex = ((a[0] + b[0]) & 1) == 0 && ((a[1] + b[1]) & 1) == 0 && ((a[2] + b[2]) & 1) == 0;
   v.splitVertex = v.hasSplitVertex ? evenMidpoint(a, b) : GridPoint{-1, -1, -1};
 }
+// The same with the longest edge found from the corners.
+inline void completeVisit(LeafVisit& v) { completeVisitWith(v, longestEdge(v.t)); }
 
 // The visit of t with the creator found among its corners (-1 when creator[0] < 0 or it is none).
 inline LeafVisit visitOf(const Tetrahedron& t, const GridPoint& creator, std::uint64_t path) {
@@ -168,7 +196,7 @@ inline void toHalf(LeafVisit& v, int half) {
   v.creator = v.splitVertex;
   v.creatorSlot = slot;
   v.path = halfLeafPath(v.path, half);
-  completeVisit(v);
+  completeVisitWith(v, longestEdgeOfHalf(v.t, slot));
 }
 
 template <class Fn>

@@ -101,9 +101,11 @@ TEST(DiamondMesh, LeafPathsNameOneTetrahedronAndRiseInVisitingOrder) {
 
 // toHalf, which the traversals use, makes the halves bisectTetrahedron makes (cut at the midpoint
 // of the longest edge found from the corners), in the same corner order, with the visit's fields
-// what visitOf finds for them: over every tetrahedron of a grid down to the finest level.
+// what visitOf finds for them: over every tetrahedron of a grid down to the finest level. Its
+// longest edge is found among the corners other than the creator (longestEdgeOfHalf); nine levels
+// of halves are three times every shape of the hierarchy.
 TEST(DiamondMesh, AVisitsHalvesAreTheHalvesOfBisection) {
-  const LebGrid g = makeLebGrid(2);
+  const LebGrid g = makeLebGrid(3);
   std::vector<LeafVisit> pending;
   const std::array<Tetrahedron, 6> roots = rootTetrahedra(g);
   for (int r = 0; r < 6; ++r)
@@ -130,7 +132,7 @@ TEST(DiamondMesh, AVisitsHalvesAreTheHalvesOfBisection) {
       ++halved;
     }
   }
-  EXPECT_EQ(halved, 2 * (6u * 64u - 6u));  // every split makes two of the 6 per cell from 6 roots
+  EXPECT_EQ(halved, 2 * (6u * 512u - 6u));  // every split makes two of the 6 per cell from 6 roots
 }
 
 TEST(DiamondMesh, FullRefinementHasSixTetrahedraPerCell) {
