@@ -95,23 +95,24 @@ class DiamondMesh {
   void setSplit(const GridPoint& d, bool split);
 };
 
+// The squared length of the edge between t's corners in slots i and j.
+inline long long edgeLength2(const Tetrahedron& t, int i, int j) {
+  const GridPoint &a = t.v[static_cast<std::size_t>(i)], &b = t.v[static_cast<std::size_t>(j)];
+  const long long dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+  return dx * dx + dy * dy + dz * dz;
+}
+
 // The vertex slots (i < j) of t's longest edge (unique in an LEB tetrahedron: its edges have the
 // lengths of a Kuhn simplex, scaled).
 inline std::pair<int, int> longestEdge(const Tetrahedron& t) {
   std::pair<int, int> e{0, 1};
   long long best = -1;
   for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j) {
-      long long l = 0;
-      for (int a = 0; a < 3; ++a) {
-        const long long d = t.v[static_cast<std::size_t>(i)][a] - t.v[static_cast<std::size_t>(j)][a];
-        l += d * d;
-      }
-      if (l > best) {
+    for (int j = i + 1; j < 4; ++j)
+      if (const long long l = edgeLength2(t, i, j); l > best) {
         best = l;
         e = {i, j};
       }
-    }
   return e;
 }
 // The two halves of t cut at the midpoint m of its longest edge (first keeps the edge's first
@@ -147,21 +148,21 @@ inline GridPoint evenMidpoint(const GridPoint& a, const GridPoint& b) {
 // the first three levels below the roots, with their creators, show every case there is;
 // diamond_mesh_test.cpp compares this with longestEdge on every half of a grid of nine levels.
 inline std::pair<int, int> longestEdgeOfHalf(const Tetrahedron& t, int creatorSlot) {
-  static constexpr std::array<std::array<int, 3>, 4> kOthers{{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
-  const std::array<int, 3>& o = kOthers[static_cast<std::size_t>(creatorSlot)];
-  auto length2 = [&](int i, int j) {
-    const GridPoint &a = t.v[static_cast<std::size_t>(i)], &b = t.v[static_cast<std::size_t>(j)];
-    const long long dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    return dx * dx + dy * dy + dz * dz;
-  };
-  // Pairs in longestEdge's order, the first of equal lengths kept (they are never equal).
-  std::pair<int, int> e{o[0], o[1]};
-  long long best = length2(o[0], o[1]);
-  if (const long long l = length2(o[0], o[2]); l > best) {
-    best = l;
-    e = {o[0], o[2]};
-  }
-  if (length2(o[1], o[2]) > best) e = {o[1], o[2]};
+  // The edges between the other corners, in longestEdge's order (the first of equal lengths kept;
+  // they are never equal).
+  static constexpr std::array<std::array<std::pair<int, int>, 3>, 4> kEdgesAvoiding{{
+      {{{1, 2}, {1, 3}, {2, 3}}},
+      {{{0, 2}, {0, 3}, {2, 3}}},
+      {{{0, 1}, {0, 3}, {1, 3}}},
+      {{{0, 1}, {0, 2}, {1, 2}}},
+  }};
+  std::pair<int, int> e{0, 1};
+  long long best = -1;
+  for (const std::pair<int, int>& edge : kEdgesAvoiding[static_cast<std::size_t>(creatorSlot)])
+    if (const long long l = edgeLength2(t, edge.first, edge.second); l > best) {
+      best = l;
+      e = edge;
+    }
   return e;
 }
 
