@@ -281,6 +281,7 @@ void reconstructSegment(const HzOrder& order, const Dims3& dims, const LebPaddin
                     for (std::size_t c = 0; c < kComponents; ++c, ++pred, ++delta)
                       target[kComponents * vi[q] + c] = storedValue<T>(*pred + *delta, mask);
                 });
+    if (taken != all.size()) throw std::logic_error("LEB decode: the walk met fewer points than countInside");
   });
 }
 
