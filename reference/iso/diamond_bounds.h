@@ -42,10 +42,9 @@ struct DiamondBounds final : DiamondRanges, DiamondRangeTable {
   LebGrid grid;
 
   const LebGrid& lebGrid() const override { return grid; }
-  bool mayContain(const GridPoint& p, double isovalue) const override {
-    const std::uint64_t i = grid.linearIndex(p);
-    return min[i] <= isovalue && isovalue <= max[i];
-  }
+  bool mayContain(const GridPoint& p, double isovalue) const override { return holds(grid.linearIndex(p), isovalue); }
+  // Whether entry i's range holds the isovalue (mayContain of the point with linear index i).
+  bool holds(std::uint64_t i, double isovalue) const { return min[i] <= isovalue && isovalue <= max[i]; }
   float errorOf(const GridPoint& p) const override { return error[grid.linearIndex(p)]; }
 };
 

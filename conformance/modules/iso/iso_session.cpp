@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -12,6 +13,7 @@
 #include "reference/iso/extraction.h"
 #include "reference/iso/grid_field.h"
 #include "reference/iso/incremental_extraction.h"
+#include "reference/iso/isovalue_mask.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_codec.h"
@@ -47,14 +49,19 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, cons
 }
 
 std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref::CompressedGridField& field,
-                                   const ref::DiamondRanges& bounds, const IsoRunOptions& options) {
+                                   const ref::DiamondRanges& given, const IsoRunOptions& options) {
   const ref::LebGrid grid = field.grid();
-  if (bounds.lebGrid().k != grid.k)
+  if (given.lebGrid().k != grid.k)
     throw std::invalid_argument("isosurface frames: the bounds' grid is not the stream's");
   const ref::Dims3 dims = field.volumeDims();
   const ref::HzOrder order(grid);
 
   double iso = scene.isovalue;
+  // A full table is asked through its bits for the frame's isovalue (isovalue_mask.h): the same
+  // answers with fewer waits on memory. Other bounds (the tiered table) are asked as they are.
+  std::optional<ref::IsovalueMask> mask;
+  if (const auto* table = dynamic_cast<const ref::DiamondBounds*>(&given)) mask.emplace(*table, iso);
+  const ref::DiamondRanges& bounds = mask ? static_cast<const ref::DiamondRanges&>(*mask) : given;
   ref::ViewRefinement refinement(bounds, iso);
   // Each frame reads only the leaf tetrahedra that were not leaves the frame before; the same mesh,
   // bit for bit, as extractIsosurface (incremental_extraction.h).
@@ -69,6 +76,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
     fr.frame = f;
     if (f == scene.isovalueChangeFrame) {
       iso += scene.isovalueStep;
+      if (mask) mask->setIsovalue(iso);
       refinement.setIsovalue(iso);
       extraction.setIsovalue(iso);
       visibleAt.clear();
