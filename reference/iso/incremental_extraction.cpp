@@ -92,12 +92,12 @@ IncrementalExtraction::IncrementalExtraction(const LebGrid& grid, const Dims3& v
                                   " points per axis");
 }
 
-void IncrementalExtraction::release(const Emitted& e, std::uint64_t path) {
-  if (e.count <= e.ids.size()) {
+void IncrementalExtraction::release(const Emitted& e) {
+  if (!e.overflows()) {
     for (std::uint32_t i = 0; i < e.count; ++i) store_.release(e.ids[i]);
     return;
   }
-  const auto o = overflow_.find(path);
+  const auto o = overflow_.find(e.overflowKey());
   for (const std::uint32_t v : o->second) store_.release(v);
   overflow_.erase(o);
 }
@@ -181,9 +181,11 @@ bool IncrementalExtraction::march(const LeafVisit& leaf, GridField& field) {
   const GridPoint& diamond = leaf.diamond();
   e.diamond = diamond[0] >= 0 ? static_cast<DiamondId>(order_.index(diamond)) : kNoDiamond;
   e.count = static_cast<std::uint32_t>(count);
-  if (count <= e.ids.size()) {
+  if (!e.overflows()) {
     std::copy(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count), e.ids.begin());
   } else {
+    e.ids[0] = static_cast<std::uint32_t>(leaf.path);
+    e.ids[1] = static_cast<std::uint32_t>(leaf.path >> 32);
     overflow_[leaf.path].assign(ids.begin(), ids.begin() + static_cast<std::ptrdiff_t>(count));
   }
   nextEmitted_.push_back(e);
@@ -208,7 +210,7 @@ void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
   std::size_t e = 0;  // the old leaves' entries in emitted_ follow their order
   auto forget = [&](const Leaf& old) {
     if (old.bits & kRead) --readLeaves_;
-    if (old.bits & kCrossing) release(emitted_[e++], pathOf(old));
+    if (old.bits & kCrossing) release(emitted_[e++]);
   };
   auto addLeaf = [&](const LeafVisit& v) { add(v, field); };
   for (std::size_t i = 0; i < leaves_.size();) {
@@ -274,17 +276,14 @@ IsoMesh IncrementalExtraction::update(const DiamondMesh& mesh, GridField& field,
   std::vector<DiamondId> diamonds;
   indices.reserve(indexCount);
   diamonds.reserve(indexCount / 3);
-  auto leaf = leaves_.begin();  // the crossing leaves, in the same order as their entries
   for (const Emitted& e : emitted_) {
-    while ((leaf->bits & kCrossing) == 0) ++leaf;
-    if (e.count <= e.ids.size()) {
+    if (!e.overflows()) {
       indices.insert(indices.end(), e.ids.begin(), e.ids.begin() + e.count);
     } else {
-      const std::vector<std::uint32_t>& ids = overflow_.at(pathOf(*leaf));
+      const std::vector<std::uint32_t>& ids = overflow_.at(e.overflowKey());
       indices.insert(indices.end(), ids.begin(), ids.end());
     }
     diamonds.insert(diamonds.end(), e.count / 3, e.diamond);
-    ++leaf;
   }
   IsoMesh out = assembleIsoMesh(std::move(indices), std::move(diamonds), store_.positions, store_.normals, &scratch_);
   if (stats != nullptr) *stats = {leaves_.size(), readLeaves_, out.triangleCount()};

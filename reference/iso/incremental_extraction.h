@@ -91,11 +91,15 @@ class IncrementalExtraction {
   static GridPoint creatorOf(const Leaf& l);
   static GridPoint splitVertexOf(const Leaf& l);
 
-  // The triangles of one crossing leaf, in 32 bytes.
+  // The triangles of one crossing leaf, in 32 bytes: their vertices when there are at most six,
+  // else the leaf's path (ids[0] its low half, ids[1] its high half), under which overflow_ holds
+  // them, so that neither the assembly nor a release looks for the leaf.
   struct Emitted {
     DiamondId diamond = kNoDiamond;
-    std::uint32_t count = 0;             // vertices, 3 per triangle
-    std::array<std::uint32_t, 6> ids{};  // when count <= 6; else in overflow_ under the leaf's path
+    std::uint32_t count = 0;  // vertices, 3 per triangle
+    std::array<std::uint32_t, 6> ids{};
+    bool overflows() const { return count > ids.size(); }
+    std::uint64_t overflowKey() const { return (std::uint64_t{ids[1]} << 32) | ids[0]; }
   };
 
   // The persistent vertex store (marchTetrahedron's store), counted by the triangles that use a
@@ -121,7 +125,7 @@ class IncrementalExtraction {
   };
   struct StoreView;  // marchTetrahedron's view of the store
 
-  void release(const Emitted& e, std::uint64_t path);
+  void release(const Emitted& e);
   // extractIsosurface's step for a new leaf: appended to nextLeaves_, its triangles (if any) to
   // nextEmitted_.
   void add(const LeafVisit& leaf, GridField& field);
