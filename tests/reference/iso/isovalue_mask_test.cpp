@@ -2,7 +2,6 @@
 // grid point gets the table's answer (DiamondBounds::holds on the entry's min and max).
 #include "reference/iso/isovalue_mask.h"
 
-#include <cmath>
 #include <limits>
 #include <random>
 #include <string>
