@@ -104,9 +104,6 @@ void IncrementalExtraction::release(const Emitted& e) {
 
 namespace {
 
-// The longest edges of a tetrahedron, numbered as Leaf keeps them.
-constexpr std::array<std::pair<int, int>, 6> kEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
-
 std::array<std::int16_t, 3> narrow(const GridPoint& p) {
   return {static_cast<std::int16_t>(p[0]), static_cast<std::int16_t>(p[1]), static_cast<std::int16_t>(p[2])};
 }
@@ -124,7 +121,7 @@ GridPoint IncrementalExtraction::creatorOf(const Leaf& l) {
 }
 
 GridPoint IncrementalExtraction::splitVertexOf(const Leaf& l) {
-  const auto [i, j] = kEdges[(l.bits >> kEdgeShift) & 7];
+  const auto [i, j] = kTetrahedronEdges[(l.bits >> kEdgeShift) & 7];
   return evenMidpoint(widen(l.v[static_cast<std::size_t>(i)]), widen(l.v[static_cast<std::size_t>(j)]));
 }
 
@@ -137,7 +134,8 @@ void IncrementalExtraction::add(const LeafVisit& leaf, GridField& field) {
   if (leaf.creatorSlot >= 0)
     kept.bits |= kHasCreator | static_cast<std::uint64_t>(leaf.creatorSlot) << kCreatorSlotShift;
   if (leaf.hasSplitVertex) {
-    const auto e = static_cast<std::uint64_t>(std::find(kEdges.begin(), kEdges.end(), leaf.longest) - kEdges.begin());
+    const auto e = static_cast<std::uint64_t>(
+        std::find(kTetrahedronEdges.begin(), kTetrahedronEdges.end(), leaf.longest) - kTetrahedronEdges.begin());
     kept.bits |= kHasSplitVertex | e << kEdgeShift;
   }
   const GridPoint& diamond = leaf.diamond();
@@ -235,7 +233,7 @@ void IncrementalExtraction::follow(const DiamondMesh& mesh, GridField& field) {
         Tetrahedron t;
         for (std::size_t k = 0; k < 4; ++k) t.v[k] = widen(old.v[k]);
         const LeafVisit start{
-            t, creatorOf(old), path, true, m, kEdges[(old.bits >> kEdgeShift) & 7], creatorSlotOf(old)};
+            t, creatorOf(old), path, true, m, kTetrahedronEdges[(old.bits >> kEdgeShift) & 7], creatorSlotOf(old)};
         forget(old);
         mesh.forEachLeafBelow(start, addLeaf);
         ++i;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -102,19 +103,25 @@ inline long long edgeLength2(const Tetrahedron& t, int i, int j) {
   return dx * dx + dy * dy + dz * dz;
 }
 
-// The vertex slots (i < j) of t's longest edge (unique in an LEB tetrahedron: its edges have the
-// lengths of a Kuhn simplex, scaled).
-inline std::pair<int, int> longestEdge(const Tetrahedron& t) {
-  std::pair<int, int> e{0, 1};
+// A tetrahedron's six edges as vertex slots (i < j), in this order everywhere they are numbered.
+inline constexpr std::array<std::pair<int, int>, 6> kTetrahedronEdges{{{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}};
+
+// The longest of the candidate edges of t (the first of equal lengths).
+template <std::size_t N>
+std::pair<int, int> longestOf(const Tetrahedron& t, const std::array<std::pair<int, int>, N>& candidates) {
+  std::pair<int, int> e = candidates[0];
   long long best = -1;
-  for (int i = 0; i < 4; ++i)
-    for (int j = i + 1; j < 4; ++j)
-      if (const long long l = edgeLength2(t, i, j); l > best) {
-        best = l;
-        e = {i, j};
-      }
+  for (const std::pair<int, int>& edge : candidates)
+    if (const long long l = edgeLength2(t, edge.first, edge.second); l > best) {
+      best = l;
+      e = edge;
+    }
   return e;
 }
+
+// The vertex slots (i < j) of t's longest edge (unique in an LEB tetrahedron: its edges have the
+// lengths of a Kuhn simplex, scaled).
+inline std::pair<int, int> longestEdge(const Tetrahedron& t) { return longestOf(t, kTetrahedronEdges); }
 // The two halves of t cut at the midpoint m of its longest edge (first keeps the edge's first
 // endpoint): the definition the traversal's toHalf follows in place (diamond_mesh_test.cpp
 // compares them).
@@ -148,22 +155,14 @@ inline GridPoint evenMidpoint(const GridPoint& a, const GridPoint& b) {
 // the first three levels below the roots, with their creators, show every case there is;
 // diamond_mesh_test.cpp compares this with longestEdge on every half of a grid of nine levels.
 inline std::pair<int, int> longestEdgeOfHalf(const Tetrahedron& t, int creatorSlot) {
-  // The edges between the other corners, in longestEdge's order (the first of equal lengths kept;
-  // they are never equal).
+  // The edges between the other corners, in kTetrahedronEdges's order (they are never equal).
   static constexpr std::array<std::array<std::pair<int, int>, 3>, 4> kEdgesAvoiding{{
       {{{1, 2}, {1, 3}, {2, 3}}},
       {{{0, 2}, {0, 3}, {2, 3}}},
       {{{0, 1}, {0, 3}, {1, 3}}},
       {{{0, 1}, {0, 2}, {1, 2}}},
   }};
-  std::pair<int, int> e{0, 1};
-  long long best = -1;
-  for (const std::pair<int, int>& edge : kEdgesAvoiding[static_cast<std::size_t>(creatorSlot)])
-    if (const long long l = edgeLength2(t, edge.first, edge.second); l > best) {
-      best = l;
-      e = edge;
-    }
-  return e;
+  return longestOf(t, kEdgesAvoiding[static_cast<std::size_t>(creatorSlot)]);
 }
 
 // Completes the visit v of v.t whose longest edge is `longest`: its split vertex when the midpoint
