@@ -60,7 +60,7 @@ void exitAtOnce(int status, void*) {
 [[noreturn]] void runChild(std::size_t index, const std::function<std::string(std::size_t)>& task, pid_t parent,
                            int outputWrite, int resultWrite) {
   setpgid(0, 0);
-  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  prctl(PR_SET_PDEATHSIG, SIGTERM);     // as a stop (stopGroup): the child removes its temporaries
   if (getppid() != parent) _exit(125);  // the parent died before the line above
   forgetInterruptsInChild();
   on_exit(exitAtOnce, nullptr);
@@ -138,21 +138,46 @@ void drain(int& fd, std::string& into, bool* truncated) {
   }
 }
 
+// Ends the child's process group and waits for the child: SIGTERM first, whose handler in the
+// child removes the temporary files it was writing (io/temporary_files.h; a SIGKILL would leave
+// them beside the outputs), then SIGKILL if the child is still there after kStopGraceSeconds (a
+// driver that blocks or ignores SIGTERM). Returns the child's wait status.
+constexpr double kStopGraceSeconds = 2.0;
+int stopGroup(pid_t pid) {
+  kill(-pid, SIGTERM);
+  const auto deadline = Clock::now() + std::chrono::duration<double>(kStopGraceSeconds);
+  int status = 0;
+  for (;;) {
+    const pid_t ended = waitpid(pid, &status, WNOHANG);
+    if (ended == pid || (ended < 0 && errno != EINTR)) return status;
+    if (Clock::now() >= deadline) break;
+    usleep(5000);
+  }
+  kill(-pid, SIGKILL);
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return status;
+}
+
+// Marks the child as stopped on purpose; reap() stops it.
 void killGroup(Running& r, Ending why) {
   if (r.killed) return;
-  kill(-r.pid, SIGKILL);
   r.killed = true;
   r.outcome.ending = why;
 }
 
-// Waits for the child and fills the ending from its status (unless it was killed on purpose).
+// Waits for the child (stopping it first when it was killed on purpose) and fills the ending from
+// its status (unless it was killed on purpose).
 void reap(Running& r) {
   for (int fd : {r.outputFd, r.resultFd})
     if (fd >= 0) close(fd);
   r.outputFd = r.resultFd = -1;
   int status = 0;
-  while (waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  if (r.killed)
+    status = stopGroup(r.pid);
+  else
+    while (waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
+    }
   kill(-r.pid, SIGKILL);  // anything the child left behind in its group
   ChildOutcome& o = r.outcome;
   o.seconds = std::chrono::duration<double>(Clock::now() - r.started).count();
@@ -209,6 +234,17 @@ bool runEachInChild(std::size_t count, const PoolOptions& options, const std::fu
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(std::max(options.tickSeconds, 0.01)));
   auto nextTick = Clock::now() + tickEvery;
   std::vector<Running> running;
+  // An error in the parent (a report it cannot write, say) leaves through here: its children are
+  // stopped and reaped first, so none is cut off by SIGKILL in the middle of writing a file.
+  struct StopOnUnwind {
+    std::vector<Running>& running;
+    ~StopOnUnwind() {
+      for (Running& r : running) {
+        killGroup(r, Ending::Interrupted);
+        reap(r);
+      }
+    }
+  } stopOnUnwind{running};
   std::size_t next = 0;
   for (;;) {
     const bool interrupted = interruptSignal() != 0;
@@ -222,8 +258,10 @@ bool runEachInChild(std::size_t count, const PoolOptions& options, const std::fu
     for (auto it = running.begin(); it != running.end();) {
       if (it->killed || (it->outputFd < 0 && it->resultFd < 0)) {
         reap(*it);
-        finished(it->index, it->outcome);
-        it = running.erase(it);
+        const std::size_t index = it->index;
+        const ChildOutcome outcome = std::move(it->outcome);
+        it = running.erase(it);  // first: a `finished` that throws must not see it reaped again
+        finished(index, outcome);
       } else {
         ++it;
       }

@@ -6,9 +6,12 @@
 // threads are idle library pools (log4cplus's, loaded with OpenImageIO), which fork() does not
 // copy; an exit() in the child therefore ends it at once with its status (on_exit) instead of
 // running the destructors that would wait for them. The child is the leader of
-// its own process group (setpgid), dies with the parent (PR_SET_PDEATHSIG) and has its standard
-// output and error captured into one pipe; its result travels back through a second pipe. When
-// its time is up the whole process group is killed with SIGKILL. The parent never runs a task
+// its own process group (setpgid), is sent SIGTERM when the parent dies (PR_SET_PDEATHSIG) and
+// has its standard output and error captured into one pipe; its result travels back through a
+// second pipe. A child is stopped (its time is up, the run is interrupted, or the parent meets an
+// error and leaves runEachInChild by an exception) by SIGTERM to its whole process group, whose
+// handler removes the temporary files the child was writing (io/temporary_files.h), then SIGKILL
+// if it is still there 2 s later; the parent waits for it either way. The parent never runs a task
 // itself, so nothing a task does (SIGSEGV in the driver, abort(), an endless loop, exit(3)) can
 // end or stall the run.
 //
@@ -55,9 +58,10 @@ struct PoolOptions {
 // Runs task(i) for every i in [0, count), each in its own child, at most `options.jobs` at once,
 // starting them in index order. `task` runs in the child and returns the result text;
 // `finished(i, outcome)` runs in the parent as each child ends (in the order they end).
-// Stops starting tasks once interrupt.h reports an interruption, kills the running children
+// Stops starting tasks once interrupt.h reports an interruption, stops the running children
 // (reported as Interrupted) and returns false; true when every task ran.
-// Throws std::system_error when a pipe or fork cannot be made.
+// Throws std::system_error when a pipe or fork cannot be made, and passes on what `finished` or
+// `options.tick` throws; either way every running child is stopped and reaped first.
 bool runEachInChild(std::size_t count, const PoolOptions& options, const std::function<std::string(std::size_t)>& task,
                     const std::function<void(std::size_t, const ChildOutcome&)>& finished);
 

@@ -16,13 +16,18 @@ volatile sig_atomic_t gSignal = 0;
 int gPipe[2] = {-1, -1};
 struct sigaction gOldInt, gOldTerm;
 
+// Gives `sig` back to the handler it had before the guard. That handler removes the temporary
+// files (io/temporary_files.h) and then takes the default action; a signal the process ignored
+// before gets the default action, so that it still ends the process.
+void restoreHandlerBeforeGuard(int sig) {
+  struct sigaction before = sig == SIGINT ? gOldInt : gOldTerm;
+  if (before.sa_handler == SIG_IGN) before.sa_handler = SIG_DFL;
+  sigaction(sig, &before, nullptr);
+}
+
 void onSignal(int sig) {
   if (gSignal != 0) {  // the second one: what the signal did before the guard, now
-    // The handler before the guard removes the temporary files (io/temporary_files.h) and then
-    // takes the default action; a signal the process ignored before gets the default action too.
-    struct sigaction before = sig == SIGINT ? gOldInt : gOldTerm;
-    if (before.sa_handler == SIG_IGN) before.sa_handler = SIG_DFL;
-    sigaction(sig, &before, nullptr);
+    restoreHandlerBeforeGuard(sig);
     raise(sig);
     return;
   }
@@ -58,9 +63,10 @@ int interruptSignal() { return gSignal; }
 int interruptFd() { return gPipe[0]; }
 
 void forgetInterruptsInChild() {
-  signal(SIGINT, SIG_DFL);
-  signal(SIGTERM, SIG_DFL);
-  if (gPipe[0] >= 0) close(gPipe[0]);
+  if (gPipe[0] < 0) return;  // no guard: the handlers are those the child should have
+  restoreHandlerBeforeGuard(SIGINT);
+  restoreHandlerBeforeGuard(SIGTERM);
+  close(gPipe[0]);
   if (gPipe[1] >= 0) close(gPipe[1]);
   gPipe[0] = gPipe[1] = -1;
 }

@@ -19,7 +19,9 @@ class InterruptGuard {
 int interruptSignal();
 // A descriptor that becomes readable when the run is interrupted (poll it), or -1 without a guard.
 int interruptFd();
-// In a forked child: the default actions for SIGINT and SIGTERM, and the parent's pipe closed.
+// In a forked child: SIGINT and SIGTERM go to the handlers they had before the guard (those of
+// io::removeTemporariesOnSignals in voxref, so a child told to stop removes its temporary files;
+// the default action where the process ignored the signal), and the parent's pipe is closed.
 void forgetInterruptsInChild();
 
 }  // namespace voxref::conf::isolation

@@ -1,13 +1,23 @@
 #include "conformance/framework/isolation/child_processes.h"
 
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <stdexcept>
+#include <thread>
+
+#include "conformance/io/temporary_files.h"
+#include "tests/scratch_folder.h"
 
 namespace voxref::conf::isolation {
 namespace {
@@ -93,6 +103,76 @@ TEST(ChildProcesses, ANoisyTaskIsNotMistakenForAResult) {
     return std::string();
   });
   EXPECT_EQ(o.at(0).ending, Ending::Exited) << "an empty result is no result";
+}
+
+// What voxref's main installs (io::removeTemporariesOnSignals), for the tests below, and the
+// handlers this test process had before, put back afterwards.
+class WithTemporariesRemovedOnSignals {
+ public:
+  WithTemporariesRemovedOnSignals() {
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], nullptr, &before_[i]);
+    io::removeTemporariesOnSignals();
+  }
+  ~WithTemporariesRemovedOnSignals() {
+    for (int i = 0; i < 3; ++i) sigaction(kSignals[i], &before_[i], nullptr);
+  }
+
+ private:
+  static constexpr int kSignals[3] = {SIGINT, SIGTERM, SIGHUP};
+  struct sigaction before_[3]{};
+};
+
+// In a child: makes `path` as a guarded temporary (as AtomicOutput does) and waits for ever.
+[[noreturn]] void writeTemporaryAndHang(const std::filesystem::path& path) {
+  std::ofstream(path) << "half an image";
+  const io::TemporaryFileGuard guard(path);
+  for (;;) pause();
+}
+
+// Waits up to 30 s for `path` to exist.
+bool appears(const std::filesystem::path& path) {
+  for (int i = 0; i < 3000 && !std::filesystem::exists(path); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  return std::filesystem::exists(path);
+}
+
+// A child stopped at its time limit is sent SIGTERM, so its handler removes the temporary file it
+// was writing; SIGKILL would leave it beside the outputs.
+TEST(ChildProcesses, AStoppedChildRemovesItsTemporaries) {
+  const WithTemporariesRemovedOnSignals handlers;
+  const test::ScratchFolder dir;
+  const auto temporary = dir / "image.tmp1.png";
+  PoolOptions options;
+  options.timeLimitSeconds = 1;
+  const auto o = runAll(1, options, [&](std::size_t) -> std::string { writeTemporaryAndHang(temporary); });
+  EXPECT_EQ(o.at(0).ending, Ending::TimedOut);
+  EXPECT_FALSE(std::filesystem::exists(temporary)) << "the stopped child left its temporary";
+}
+
+// An exception out of the parent's callback (a report it cannot write) leaves runEachInChild only
+// after the running children are stopped and reaped: the one writing a file removes it first.
+// Task 0 returns once task 1's temporary exists, so the error comes while task 1 holds it.
+TEST(ChildProcesses, AnErrorInTheParentStopsItsChildrenFirst) {
+  const WithTemporariesRemovedOnSignals handlers;
+  const test::ScratchFolder dir;
+  const auto temporary = dir / "image.tmp2.png";
+  PoolOptions options;
+  options.jobs = 2;
+  const auto task = [&](std::size_t i) -> std::string {
+    if (i == 1) writeTemporaryAndHang(temporary);
+    return appears(temporary) ? "task 1 is writing" : "task 1 never wrote";
+  };
+  std::string told;
+  EXPECT_THROW(runEachInChild(2, options, task,
+                              [&](std::size_t, const ChildOutcome& o) {
+                                told = o.result;
+                                throw std::runtime_error("cannot write results.json: File too large");
+                              }),
+               std::runtime_error);
+  EXPECT_EQ(told, "task 1 is writing");
+  EXPECT_FALSE(std::filesystem::exists(temporary)) << "the child was cut off while writing";
+  EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1) << "a child is left unreaped";
+  EXPECT_EQ(errno, ECHILD);
 }
 
 }  // namespace
