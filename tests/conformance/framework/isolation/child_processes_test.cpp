@@ -122,10 +122,12 @@ class WithTemporariesRemovedOnSignals {
   struct sigaction before_[3]{};
 };
 
-// In a child: makes `path` as a guarded temporary (as AtomicOutput does) and waits for ever.
+// In a child: makes `path` as a guarded temporary (as AtomicOutput does), then `path`.started
+// (unguarded: it stays, and shows that the temporary was there), and waits for ever.
 [[noreturn]] void writeTemporaryAndHang(const std::filesystem::path& path) {
   std::ofstream(path) << "half an image";
   const io::TemporaryFileGuard guard(path);
+  std::ofstream(path.string() + ".started") << "the temporary is there";
   for (;;) pause();
 }
 
@@ -143,9 +145,10 @@ TEST(ChildProcesses, AStoppedChildRemovesItsTemporaries) {
   const test::ScratchFolder dir;
   const auto temporary = dir / "image.tmp1.png";
   PoolOptions options;
-  options.timeLimitSeconds = 1;
+  options.timeLimitSeconds = 3;
   const auto o = runAll(1, options, [&](std::size_t) -> std::string { writeTemporaryAndHang(temporary); });
   EXPECT_EQ(o.at(0).ending, Ending::TimedOut);
+  ASSERT_TRUE(std::filesystem::exists(temporary.string() + ".started")) << "the child never made its temporary";
   EXPECT_FALSE(std::filesystem::exists(temporary)) << "the stopped child left its temporary";
 }
 
@@ -160,7 +163,7 @@ TEST(ChildProcesses, AnErrorInTheParentStopsItsChildrenFirst) {
   options.jobs = 2;
   const auto task = [&](std::size_t i) -> std::string {
     if (i == 1) writeTemporaryAndHang(temporary);
-    return appears(temporary) ? "task 1 is writing" : "task 1 never wrote";
+    return appears(temporary.string() + ".started") ? "task 1 is writing" : "task 1 never wrote";
   };
   std::string told;
   EXPECT_THROW(runEachInChild(2, options, task,
