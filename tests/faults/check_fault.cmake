@@ -3,7 +3,8 @@ cmake_minimum_required(VERSION 3.25)
 # cleanly and that the outputs already in DIR survive it:
 #   - the exit status is non-zero, and the output matches EXPECT_OUTPUT (a regular expression);
 #   - every file that was in DIR before the run is still there, byte for byte (SHA-256);
-#   - no temporary file of an atomic write (".tmp<pid>") is left in DIR;
+#   - the command leaves no temporary file of an atomic write (".tmp<pid>") in DIR (one that was
+#     there before is an earlier run's, and fails that run's check, not this one's);
 #   - every file the run added is whole: a PNG ends with its IEND chunk, a .json file parses.
 # The fault: FSIZE (optional) limits the size of any file the command writes to FSIZE blocks of
 # 512 bytes (`ulimit -f`, SIGXFSZ ignored, so a write past the limit fails with EFBIG as a write
@@ -61,10 +62,14 @@ foreach(entry IN LISTS before)
 endforeach()
 file(GLOB_RECURSE after LIST_DIRECTORIES false RELATIVE "${DIR}" "${DIR}/*")
 foreach(f IN LISTS after)
-  if(f MATCHES "\\.tmp[0-9]+")
+  set(isNew TRUE)
+  if("${before}" MATCHES "(^|;)${f}=")
+    set(isNew FALSE)
+  endif()
+  if(isNew AND f MATCHES "\\.tmp[0-9]+")
     list(APPEND problems "a temporary file is left: ${f}")
   endif()
-  if(NOT "${before}" MATCHES "(^|;)${f}=")
+  if(isNew)
     file(SIZE "${DIR}/${f}" size)
     if(f MATCHES "\\.png$")
       if(size LESS 12)
