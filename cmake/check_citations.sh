@@ -20,7 +20,7 @@ for f in $files; do
   [ -f "$f" ] && candidates="$candidates $f"
 done
 # Only the files that name a .md at all, found by one grep (a few processes a file otherwise).
-for f in $(grep -lF '.md' $candidates); do
+for f in $(grep -lF '.md' $candidates </dev/null); do
   dir=$(dirname "$f")
   for t in $( (grep -oE '[A-Za-z0-9_./-]*[A-Za-z0-9_-]+\.md' "$f"; grep -oE '\]\([^)# ]+\.md' "$f" | sed 's/^](//') | sort -u); do
     base=$(basename "$t" .md)
