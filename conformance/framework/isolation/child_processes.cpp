@@ -138,6 +138,14 @@ void drain(int& fd, std::string& into, bool* truncated) {
   }
 }
 
+// Waits for the child to end; returns its wait status.
+int waitFor(pid_t pid) {
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  return status;
+}
+
 // Ends the child's process group and waits for the child: SIGTERM first, whose handler in the
 // child removes the temporary files it was writing (io/temporary_files.h; a SIGKILL would leave
 // them beside the outputs), then SIGKILL if the child is still there after kStopGraceSeconds (a
@@ -154,9 +162,7 @@ int stopGroup(pid_t pid) {
     usleep(5000);
   }
   kill(-pid, SIGKILL);
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  return status;
+  return waitFor(pid);
 }
 
 // Marks the child as stopped on purpose; reap() stops it.
@@ -172,12 +178,7 @@ void reap(Running& r) {
   for (int fd : {r.outputFd, r.resultFd})
     if (fd >= 0) close(fd);
   r.outputFd = r.resultFd = -1;
-  int status = 0;
-  if (r.killed)
-    status = stopGroup(r.pid);
-  else
-    while (waitpid(r.pid, &status, 0) < 0 && errno == EINTR) {
-    }
+  const int status = r.killed ? stopGroup(r.pid) : waitFor(r.pid);
   kill(-r.pid, SIGKILL);  // anything the child left behind in its group
   ChildOutcome& o = r.outcome;
   o.seconds = std::chrono::duration<double>(Clock::now() - r.started).count();

@@ -122,48 +122,53 @@ class WithTemporariesRemovedOnSignals {
   struct sigaction before_[3]{};
 };
 
-// In a child: makes `path` as a guarded temporary (as AtomicOutput does), then `path`.started
-// (unguarded: it stays, and shows that the temporary was there), and waits for ever.
-[[noreturn]] void writeTemporaryAndHang(const std::filesystem::path& path) {
-  std::ofstream(path) << "half an image";
-  const io::TemporaryFileGuard guard(path);
-  std::ofstream(path.string() + ".started") << "the temporary is there";
-  for (;;) pause();
-}
+// A child stopped while it writes a temporary file: the handlers voxref installs, a scratch
+// folder, and in it the temporary (guarded, as AtomicOutput guards it) and its marker.
+class StoppedWhileWriting : public ::testing::Test {
+ protected:
+  // In a child: makes the temporary, then the marker (unguarded: it stays, and shows that the
+  // temporary was there), and waits for ever.
+  [[noreturn]] void writeTemporaryAndHang() const {
+    std::ofstream(temporary_) << "half an image";
+    const io::TemporaryFileGuard guard(temporary_);
+    std::ofstream(started_) << "the temporary is there";
+    for (;;) pause();
+  }
+  // Waits up to 30 s for the marker.
+  bool started() const {
+    for (int i = 0; i < 3000 && !std::filesystem::exists(started_); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    return std::filesystem::exists(started_);
+  }
+  bool temporaryLeft() const { return std::filesystem::exists(temporary_); }
 
-// Waits up to 30 s for `path` to exist.
-bool appears(const std::filesystem::path& path) {
-  for (int i = 0; i < 3000 && !std::filesystem::exists(path); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  return std::filesystem::exists(path);
-}
+ private:
+  const WithTemporariesRemovedOnSignals handlers_;
+  const test::ScratchFolder dir_;
+  const std::filesystem::path temporary_ = dir_ / "image.tmp1.png";
+  const std::filesystem::path started_ = temporary_.string() + ".started";
+};
 
 // A child stopped at its time limit is sent SIGTERM, so its handler removes the temporary file it
 // was writing; SIGKILL would leave it beside the outputs.
-TEST(ChildProcesses, AStoppedChildRemovesItsTemporaries) {
-  const WithTemporariesRemovedOnSignals handlers;
-  const test::ScratchFolder dir;
-  const auto temporary = dir / "image.tmp1.png";
+TEST_F(StoppedWhileWriting, AtItsTimeLimitTheChildRemovesItsTemporary) {
   PoolOptions options;
   options.timeLimitSeconds = 3;
-  const auto o = runAll(1, options, [&](std::size_t) -> std::string { writeTemporaryAndHang(temporary); });
+  const auto o = runAll(1, options, [&](std::size_t) -> std::string { writeTemporaryAndHang(); });
   EXPECT_EQ(o.at(0).ending, Ending::TimedOut);
-  ASSERT_TRUE(std::filesystem::exists(temporary.string() + ".started")) << "the child never made its temporary";
-  EXPECT_FALSE(std::filesystem::exists(temporary)) << "the stopped child left its temporary";
+  ASSERT_TRUE(started()) << "the child never made its temporary";
+  EXPECT_FALSE(temporaryLeft()) << "the stopped child left its temporary";
 }
 
 // An exception out of the parent's callback (a report it cannot write) leaves runEachInChild only
 // after the running children are stopped and reaped: the one writing a file removes it first.
 // Task 0 returns once task 1's temporary exists, so the error comes while task 1 holds it.
-TEST(ChildProcesses, AnErrorInTheParentStopsItsChildrenFirst) {
-  const WithTemporariesRemovedOnSignals handlers;
-  const test::ScratchFolder dir;
-  const auto temporary = dir / "image.tmp2.png";
+TEST_F(StoppedWhileWriting, AnErrorInTheParentStopsItsChildrenFirst) {
   PoolOptions options;
   options.jobs = 2;
   const auto task = [&](std::size_t i) -> std::string {
-    if (i == 1) writeTemporaryAndHang(temporary);
-    return appears(temporary.string() + ".started") ? "task 1 is writing" : "task 1 never wrote";
+    if (i == 1) writeTemporaryAndHang();
+    return started() ? "task 1 is writing" : "task 1 never wrote";
   };
   std::string told;
   EXPECT_THROW(runEachInChild(2, options, task,
@@ -173,7 +178,7 @@ TEST(ChildProcesses, AnErrorInTheParentStopsItsChildrenFirst) {
                               }),
                std::runtime_error);
   EXPECT_EQ(told, "task 1 is writing");
-  EXPECT_FALSE(std::filesystem::exists(temporary)) << "the child was cut off while writing";
+  EXPECT_FALSE(temporaryLeft()) << "the child was cut off while writing";
   EXPECT_EQ(waitpid(-1, nullptr, WNOHANG), -1) << "a child is left unreaped";
   EXPECT_EQ(errno, ECHILD);
 }
