@@ -160,17 +160,12 @@ DiamondPoints diamondParents(const LebGrid& g, const GridPoint& p) {
   if (c.level == 0) return parents;  // the root diamond: its ring is root corners
   const int h = 1 << c.scaleLog2;
   if (c.phase == 2) {
-    // On each axis one of p_a - h and p_a + h is an odd multiple of 2h (they are 2h apart):
-    // corner m (cubeCorner) has an odd coordinate on axis a where its bit a equals bit a of
-    // `allOdd`, the corner odd on every axis. The corners odd on exactly one axis are allOdd with
-    // the two other bits flipped: three, taken in the ring's order (ascending m).
-    unsigned allOdd = 0;
-    for (int a = 0; a < 3; ++a) allOdd |= static_cast<unsigned>(((p[a] + h) >> (c.scaleLog2 + 1)) & 1) << a;
-    unsigned m[3] = {allOdd ^ 6u, allOdd ^ 5u, allOdd ^ 3u};
-    if (m[0] > m[1]) std::swap(m[0], m[1]);
-    if (m[1] > m[2]) std::swap(m[1], m[2]);
-    if (m[0] > m[1]) std::swap(m[0], m[1]);
-    for (const unsigned corner : m) parents.push_back(cubeCorner(p, h, static_cast<int>(corner)));
+    for (int m = 0; m < 8; ++m) {
+      const GridPoint q = cubeCorner(p, h, m);
+      int odd = 0;
+      for (int a = 0; a < 3; ++a) odd += (q[a] >> (c.scaleLog2 + 1)) & 1;
+      if (odd == 1) parents.push_back(q);
+    }
   } else if (c.phase == 1) {
     const int even = std::countr_zero(~c.oddAxes & 7u);
     for (const int d : {-h, h}) {
