@@ -69,11 +69,12 @@ std::uint64_t HzOrder::index(const GridPoint& p) const {
   const LebPointClass c = classifyPoint(grid_, p);
   if (c.level < 0) return (p[0] ? 1u : 0u) | (p[1] ? 2u : 0u) | (p[2] ? 4u : 0u);
   const Level& lv = levels_[static_cast<std::size_t>(c.level)];
+  const int cellSide = 2 << lv.scaleLog2;
   const int n = 1 << lv.cellBits;
   unsigned boundary = 0;
   int free[3], count = 0;
   for (int a = 0; a < 3; ++a) {
-    const int cell = p[a] >> (lv.scaleLog2 + 1);  // p[a] / cellSide: classifyPoint checked p[a] >= 0
+    const int cell = p[a] / cellSide;
     if (cell == n)
       boundary |= 1u << a;
     else

@@ -9,25 +9,17 @@
 namespace voxref::ref {
 namespace {
 
-// The errors out of line and cold, so that the checks stay a few instructions in the callers' hot
-// paths (classifyPoint runs for every diamond the refinement and the extraction touch).
-[[noreturn, gnu::cold, gnu::noinline]] void throwOutside(const LebGrid& g, const GridPoint& p) {
-  throw std::invalid_argument("point " + pointText(p) + " is outside the " + std::to_string(g.pointsPerAxis()) +
-                              "^3 grid");
-}
-
 void requireInside(const LebGrid& g, const GridPoint& p) {
-  if (!g.contains(p)) throwOutside(g, p);
-}
-
-[[noreturn, gnu::cold, gnu::noinline]] void throwRootCorner(const GridPoint& p) {
-  throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
+  if (!g.contains(p))
+    throw std::invalid_argument("point " + pointText(p) + " is outside the " + std::to_string(g.pointsPerAxis()) +
+                                "^3 grid");
 }
 
 // classifyPoint for a diamond's split vertex: throws std::invalid_argument for a root corner.
 LebPointClass diamondClass(const LebGrid& g, const GridPoint& p) {
   const LebPointClass c = classifyPoint(g, p);
-  if (c.level < 0) throwRootCorner(p);
+  if (c.level < 0)
+    throw std::invalid_argument("the root corner " + pointText(p) + " is not the split vertex of a diamond");
   return c;
 }
 
@@ -79,16 +71,18 @@ bool isRootCorner(const LebGrid& g, const GridPoint& p) {
 LebPointClass classifyPoint(const LebGrid& g, const GridPoint& p) {
   requireInside(g, p);
   LebPointClass c;
-  // The scale: the largest power of two dividing every coordinate (0 is divisible by all), which
-  // is the trailing zeros of their bitwise or, capped at k. Coordinates in [0, 2^k] that are all
-  // multiples of 2^k are 0 or 2^k: a root corner (isRootCorner), of scale k.
-  const auto bits = static_cast<unsigned>(p[0] | p[1] | p[2]);
-  const int s = bits == 0 ? g.k : std::min(g.k, std::countr_zero(bits));
+  if (isRootCorner(g, p)) {
+    c.scaleLog2 = g.k;
+    return c;
+  }
+  // The scale: the largest power of two dividing every coordinate (0 is divisible by all).
+  int s = g.k;
+  for (int v : p)
+    if (v != 0) s = std::min(s, std::countr_zero(static_cast<unsigned>(v)));
   c.scaleLog2 = s;
-  if (s == g.k) return c;
   for (int a = 0; a < 3; ++a)
     if ((p[a] >> s) & 1) c.oddAxes |= 1u << a;
-  static constexpr int kBits[8] = {0, 1, 1, 2, 1, 2, 2, 3};  // popcount of the 3-bit mask, without a libgcc call
+  constexpr int kBits[8] = {0, 1, 1, 2, 1, 2, 2, 3};  // popcount of the 3-bit mask, without a libgcc call
   const int odd = kBits[c.oddAxes];
   c.phase = odd - 1;
   c.level = 3 * (g.k - 1 - s) + (3 - odd);

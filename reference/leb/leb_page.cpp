@@ -1,7 +1,6 @@
 #include "reference/leb/leb_page.h"
 
 #include <algorithm>
-#include <memory>
 #include <string>
 
 #include "reference/common/byte_stream.h"
@@ -52,20 +51,13 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
   LebPageReader reader = openPage(s, c, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
   const std::size_t size = std::size_t{1} << s.pageBits;
-  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
-  // The deltas as the reader gives them, in a buffer it overwrites whole (no zero-fill: a page
-  // decode is on the path of every random access that misses the cache).
-  auto readDeltas = [&](std::size_t count) {
-    auto deltas = std::make_unique_for_overwrite<std::int32_t[]>(count);
-    if (count > 0) reader.read({deltas.get(), count});
-    return deltas;
-  };
   std::vector<std::int16_t> out(size * comps, 0);
+  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
   // A page wholly inside the volume (most of them) holds every index of it, in order.
   if (order.allInside(s.dims, begin, end)) {
-    const std::size_t count = static_cast<std::size_t>(end - begin) * comps;
-    const auto deltas = readDeltas(count);
-    std::transform(deltas.get(), deltas.get() + count, out.begin(),
+    std::vector<std::int32_t> deltas(static_cast<std::size_t>(end - begin) * comps);
+    if (!deltas.empty()) reader.read(deltas);
+    std::transform(deltas.begin(), deltas.end(), out.begin(),
                    [](std::int32_t d) { return static_cast<std::int16_t>(d); });
     finishPage(reader, end - begin, c, page);
     return out;
@@ -77,7 +69,8 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
   order.forEachInside(s.dims, begin, end, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
     at.push_back(static_cast<std::uint32_t>(h - begin));
   });
-  const auto deltas = readDeltas(at.size() * comps);
+  std::vector<std::int32_t> deltas(at.size() * comps);
+  if (!at.empty()) reader.read(deltas);
   for (std::size_t i = 0; i < at.size(); ++i)
     for (std::size_t k = 0; k < comps; ++k)
       out[static_cast<std::size_t>(at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
