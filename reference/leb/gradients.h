@@ -49,14 +49,58 @@ inline void quantizeGradient(const std::array<double, 3>& g, std::int8_t* out) {
     out[a] = len == 0.0 ? 0 : static_cast<std::int8_t>(std::lround(127.0 * g[a] / len));
 }
 
+// std::lround of x for |x| <= 127 (half away from zero), without the library call: the truncation
+// t is exact, and so is x - t.
+inline std::int8_t roundHalfAwayFromZero(double x) {
+  const int t = static_cast<int>(x);
+  const double f = x - t;
+  return static_cast<std::int8_t>(t + (f >= 0.5 ? 1 : 0) - (f <= -0.5 ? 1 : 0));
+}
+
+// quantizeGradient(centralGradient(...)) of a sample whose six axis neighbours lie in the volume,
+// from the central differences e = (x+1) - (x-1) (integers, |e| < 2^16), to the same bits: there
+// g = e / 2 exactly, |g| = sqrt(S / 4) = sqrt(S) / 2 for the integer S = e . e (the squares and
+// their sum are exact in double, and a correctly rounded square root commutes with the exact
+// scaling by 1/4; IEEE 754-2019 section 5.4.1), and (127 g) / |g| = (127 e / 2) / (sqrt(S) / 2)
+// rounds as (127 e) / sqrt(S) (both operands scaled exactly by 1/2). |127 e / sqrt(S)| <= 127, so
+// roundHalfAwayFromZero applies.
+inline void interiorQuantizedGradient(std::int32_t ex, std::int32_t ey, std::int32_t ez, std::int8_t* out) {
+  const std::int64_t s = std::int64_t{ex} * ex + std::int64_t{ey} * ey + std::int64_t{ez} * ez;
+  if (s == 0) {
+    out[0] = out[1] = out[2] = 0;
+    return;
+  }
+  const double len = std::sqrt(static_cast<double>(s));
+  out[0] = roundHalfAwayFromZero(127.0 * ex / len);
+  out[1] = roundHalfAwayFromZero(127.0 * ey / len);
+  out[2] = roundHalfAwayFromZero(127.0 * ez / len);
+}
+
 // The same for slice z alone (3 int8 per sample of the slice into out, x fastest), of samples of
 // extents d at `samples` (x fastest): it reads slices z - 1 .. z + 1 only, so a file's gradients
 // are made slice by slice (quantizedGradients is this for every z).
+//
+// The samples with both neighbours inside the volume on every axis take a shorter road to the same
+// bits (interiorQuantizedGradient); the others, on the faces, take centralGradient.
 template <class T>
 void quantizedGradientSlice(const T* samples, const Dims3& d, int z, std::int8_t* out) {
+  const bool interiorSlice = d[0] >= 3 && d[1] >= 3 && z > 0 && z + 1 < d[2];
+  const auto sy = static_cast<std::ptrdiff_t>(d[0]), sz = sy * d[1];
   std::size_t i = 0;
-  for (int y = 0; y < d[1]; ++y)
-    for (int x = 0; x < d[0]; ++x, ++i) quantizeGradient(centralGradient(samples, d, x, y, z), out + 3 * i);
+  for (int y = 0; y < d[1]; ++y) {
+    if (!interiorSlice || y == 0 || y + 1 == d[1]) {
+      for (int x = 0; x < d[0]; ++x, ++i) quantizeGradient(centralGradient(samples, d, x, y, z), out + 3 * i);
+      continue;
+    }
+    const T* row = samples + static_cast<std::ptrdiff_t>(z) * sz + static_cast<std::ptrdiff_t>(y) * sy;
+    quantizeGradient(centralGradient(samples, d, 0, y, z), out + 3 * i++);
+    for (int x = 1; x + 1 < d[0]; ++x, ++i) {
+      const T* c = row + x;
+      interiorQuantizedGradient(static_cast<std::int32_t>(c[1]) - c[-1], static_cast<std::int32_t>(c[sy]) - c[-sy],
+                                static_cast<std::int32_t>(c[sz]) - c[-sz], out + 3 * i);
+    }
+    quantizeGradient(centralGradient(samples, d, d[0] - 1, y, z), out + 3 * i++);
+  }
 }
 
 // The paper's Table 1 conditions (section 4: "the raw floating point gradients are run through a
