@@ -56,14 +56,23 @@ struct Encoded {
   Timing encode, decode;
 };
 
-Encoded encodeAndCheck(const LebDataset& d, int pageBits, int threads) {
+// The data set encoded with its gradients (stored, or derived from the data:
+// reference/leb/FORMAT.md, header byte 23), decoded, and checked: the samples and the gradients
+// (quantizedGradients) bit for bit.
+Encoded encodeAndCheck(const LebDataset& d, int pageBits, int threads, bool deriveGradients = false) {
   Encoded e;
+  ref::LebEncodeOptions options;
+  options.pageBits = pageBits;
+  options.threads = threads;
+  options.deriveGradients = deriveGradients;
   std::string bytes;
-  e.encode = measureOnce([&] { bytes = ref::encodeLeb(d.volume, d.bits, {pageBits, true, threads, {}}); });
+  e.encode = measureOnce([&] { bytes = ref::encodeLeb(d.volume, d.bits, options); });
   e.stream = std::make_shared<const ref::LebStream>(ref::parseLebStream(std::move(bytes)));
   ref::LebDecoded back;
   e.decode = measureOnce([&] { back = ref::decodeLeb(*e.stream, threads); });
-  if (back.data.data() != d.volume.data()) throw std::runtime_error("LEB round trip of " + d.name + " is not lossless");
+  if (back.data.data() != d.volume.data() || back.gradients != ref::quantizedGradients(d.volume))
+    throw std::runtime_error("LEB round trip of " + d.name + (deriveGradients ? " (gradients derived)" : "") +
+                             " is not lossless");
   return e;
 }
 
@@ -106,6 +115,20 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
                              {"ratio", st.ratio()},
                              {"encode", toJson(e.encode)},
                              {"decode", toJson(e.decode)}});
+
+    // The same stream with the gradients derived from the data (reference/leb/FORMAT.md, header
+    // byte 23): the data channel alone, the same samples and gradients decoded (checked).
+    const Encoded derived = encodeAndCheck(d, 12, o.threads, true);
+    const double derivedBytes = static_cast<double>(derived.stream->bytes.size());
+    t.rows.push_back({d.name, "LEB lead-1, gradients derived from the data (--derive-gradients)",
+                      ratio(rawAll / derivedBytes), ratio(st.channelRatio(ref::LebChannelKind::Data)),
+                      "derived: none stored", std::to_string(derived.stream->bytes.size()),
+                      mbps(rawAll, derived.encode.median), mbps(rawAll, derived.decode.median), paper});
+    row["codecs"].push_back({{"codec", "leb, gradients derived"},
+                             {"bytes", derived.stream->bytes.size()},
+                             {"ratio", rawAll / derivedBytes},
+                             {"encode", toJson(derived.encode)},
+                             {"decode", toJson(derived.decode)}});
 
     // The paper's Table 1 conditions for the gradients: diffused before they are quantized
     // (gradients.h, diffusedQuantizedGradients), each stream decoded and checked bit for bit.
@@ -178,8 +201,10 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
       "separately (x fastest), "
       "'LEB prediction + zstd -19' hands the same deltas the lead-1 coder codes to zstd. zstd and xz are not randomly "
       "accessible. "
-      "Decode MB/s: output bytes per second of the whole volume (data and gradients). Every codec's round trip is "
-      "checked in the run.";
+      "Decode MB/s: output bytes per second of the whole volume (data and gradients). 'Gradients derived': the "
+      "stream holds the data channel alone and its decoder computes the same gradients from the samples "
+      "(reference/leb/FORMAT.md, header byte 23); the paper's diffused gradients cannot be derived so. Every codec's "
+      "round trip is checked in the run.";
   return t;
 }
 
@@ -332,6 +357,23 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   t.rows.push_back({"whole volume / goal of 330 MB/s (it cannot exceed page decompression alone, row 1)",
                     formatNumber("%.2f", volumeBytes / 1e6 / w1.median / kWholeDecodeGoalMBps),
                     formatNumber("%.2f", volumeBytes / 1e6 / w2.median / kWholeDecodeGoalMBps), ""});
+  // The same volume in a stream that derives its gradients (voxref encode --derive-gradients): the
+  // data channel alone, the gradients computed from the decoded samples; checked in the run.
+  const Encoded derived = encodeAndCheck(*d, 12, o.threads, true);
+  const Timing v1 = measure([&] { (void)ref::decodeLeb(*derived.stream, 1); });
+  const Timing v2 = measure([&] { (void)ref::decodeLeb(*derived.stream, 2); });
+  t.rows.push_back({"whole volume, gradients derived from the data (a stream of " +
+                        std::to_string(derived.stream->bytes.size()) + " bytes, against " +
+                        std::to_string(e.stream->bytes.size()) + " storing them), MB/s of data and gradients",
+                    mbps(volumeBytes, v1.median), mbps(volumeBytes, v2.median), ""});
+  t.rows.push_back({"whole volume, gradients derived / goal of 330 MB/s",
+                    formatNumber("%.2f", volumeBytes / 1e6 / v1.median / kWholeDecodeGoalMBps),
+                    formatNumber("%.2f", volumeBytes / 1e6 / v2.median / kWholeDecodeGoalMBps), ""});
+  t.data["whole_derived"] = {{"output_bytes", volumeBytes},
+                             {"stream_bytes", derived.stream->bytes.size()},
+                             {"stored_stream_bytes", e.stream->bytes.size()},
+                             {"one_thread", toJson(v1)},
+                             {"two_threads", toJson(v2)}};
   const int points = o.quick ? 5000 : 1000000;
   for (const AccessPattern pattern : {AccessPattern::Bricks, AccessPattern::Uniform})
     for (std::size_t budget : {std::size_t{64} << 20, std::size_t{1} << 20}) {
@@ -353,6 +395,24 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
                                          {"points_per_second_2", r2.pointsPerSecond},
                                          {"page_decodes_per_point", r1.pageMissesPerPoint}});
     }
+  {
+    const std::size_t budget = std::size_t{64} << 20;
+    const RandomAccess r1 = randomAccess(derived.stream, 1, budget, points, AccessPattern::Bricks),
+                       r2 = randomAccess(derived.stream, 2, budget, points, AccessPattern::Bricks);
+    t.rows.push_back(
+        {"points of random 8^3 bricks, gradients derived (a point's gradient from its six neighbours' "
+         "samples), points/s, cache 64 MB",
+         formatNumber("%.0f", r1.pointsPerSecond) +
+             formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
+         formatNumber("%.0f", r2.pointsPerSecond) +
+             formatNumber(" (%.2f of the goal, 3.3 M)", r2.pointsPerSecond / 3.3e6),
+         ""});
+    t.data["random_access_derived"] = {{"pattern", "bricks"},
+                                       {"budget_bytes", budget},
+                                       {"points_per_second_1", r1.pointsPerSecond},
+                                       {"points_per_second_2", r2.pointsPerSecond},
+                                       {"page_decodes_per_point", r1.pageMissesPerPoint}};
+  }
   t.data["pages"] = {{"output_bytes", out}, {"one_thread", toJson(p1)}, {"two_threads", toJson(p2)}};
   t.data["zstd19_decode"] = {
       {"output_bytes", zstdBytes}, {"data", toJson(zd.decompress)}, {"gradients", toJson(zg.decompress)}};
@@ -371,7 +431,10 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
       "every point "
       "decodes a page of 4096 points. The paper's reconstruction rates were measured during isosurface extraction "
       "(coherent, "
-      "with disk loads), so they compare with the bricks row in order of magnitude only.";
+      "with disk loads), so they compare with the bricks row in order of magnitude only. 'Gradients derived': the "
+      "same volume encoded with --derive-gradients (reference/leb/FORMAT.md, header byte 23), whose stream holds the "
+      "data channel alone; its decoders compute the gradients from the decoded samples (the same bytes, checked in "
+      "the run).";
   return t;
 }
 

@@ -8,6 +8,7 @@
 #include "conformance/bench/baselines.h"
 #include "conformance/framework/progress.h"
 #include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/gradients.h"
 #include "reference/leb/leb_codec.h"
 #include "reference/leb/leb_page.h"
 
@@ -125,6 +126,7 @@ struct ChannelFigures {
   double rawBytes = 0.0;
   std::vector<CoderFigure> coders;  // lead-1, adaptive 2^12, adaptive 2^16, zstd -19, xz -9
   double tripleEntropy = 0.0;       // gradients only
+  Timing derive;                    // gradients only: quantizedGradients of the samples, one thread
   double repeatedRows = 0.0;        // repeatedRowShare of the channel's x-rows
 };
 
@@ -137,14 +139,17 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
   for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
     const bool data = kind == ref::LebChannelKind::Data;
     const std::string raw = data ? dataBytes(d.volume, d.bits) : gradientBytes(d.volume);
-    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0};
+    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, 0.0, {}};
     const ChannelPages p12 = channelPages(d, kind, 12);
     f.coders.push_back(lead1(s, p12, runs));
     f.coders.push_back(adaptive(p12, 12, runs));
     f.coders.push_back(adaptive(channelPages(d, kind, 16), 16, runs));
     f.coders.push_back(baseline(zstdBaseline(raw, 19)));
     f.coders.push_back(baseline(xzBaseline(raw, 9)));
-    if (!data) f.tripleEntropy = tripleEntropyBytes(raw);
+    if (!data) {
+      f.tripleEntropy = tripleEntropyBytes(raw);
+      f.derive = measure([&] { (void)ref::quantizedGradients(d.volume); }, runs);
+    }
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
     figures.push_back(std::move(f));
@@ -204,6 +209,12 @@ BenchTable lebCoderBench(const BenchOptions& o) {
                           "anchor: order-0 entropy of the gradient vectors (3-byte symbols; not a coder)",
                           ratioText(f.rawBytes / f.tripleEntropy), "-", ""});
         row["triple_entropy_bytes"] = f.tripleEntropy;
+        t.rows.push_back({d.name, channel,
+                          "derived from the data (--derive-gradients; not an entropy stage: the decoder computes "
+                          "them from the samples)",
+                          "none stored", formatNumber("%.1f", f.rawBytes / 1e6 / f.derive.median),
+                          "no coder: nothing to compare"});
+        row["derive"] = toJson(f.derive);
       }
       t.data["rows"].push_back(row);
     }

@@ -58,6 +58,9 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
                    "(voxref's range coder; version 3)")
       ->default_val("lead1");
   encodeCmd->add_flag("--no-gradients", encode->noGradients, "leb: code the data only, no gradients channel");
+  encodeCmd->add_flag("--derive-gradients", encode->deriveGradients,
+                      "leb: store no gradients channel; the decoder derives the gradients from the samples (the same "
+                      "bytes: reference/leb/FORMAT.md, header byte 23)");
   encodeCmd->add_option("--bounds-out", encode->boundsOut,
                         "leb: also write the per-diamond min, max and error for isosurfaces (.vxlbb)");
   encodeCmd->add_option("--out", encode->out, "output file (.vxtv, .vxleb)")->required();

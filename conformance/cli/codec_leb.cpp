@@ -75,6 +75,9 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
         << (data ? " + " + std::to_string(st.headerBytes) + " header" : "") << ", ratio "
         << ratioText(st.channelRatio(c.kind)) << "\n";
   }
+  if (s.derivedGradients)
+    out << "gradients       derived from the data when decoded (central differences; reference/leb/FORMAT.md, "
+           "header byte 23): none stored\n";
   out << "stream          " << st.streamBytes << " bytes, ratio " << ratioText(st.ratio())
       << " (raw bytes of the volume" << (st.channels.size() > 1 ? " and its gradients" : "") << " over the stream)\n";
 }
@@ -95,6 +98,9 @@ int encodeLebCommand(const EncodeOptions& o) {
   ref::LebEncodeOptions options;
   options.pageBits = o.pageBits;
   options.gradients = !o.noGradients;
+  options.deriveGradients = o.deriveGradients;
+  if (o.noGradients && o.deriveGradients)
+    throw conf::UsageError("--derive-gradients and --no-gradients contradict each other: give one");
   if (o.lebCoder == "lead1")
     options.coder = ref::LebCoder::Lead1;
   else if (o.lebCoder == "adaptive")
@@ -172,8 +178,8 @@ int decodeLebCommand(const DecodeOptions& o) {
   if (o.step) throw conf::UsageError("--step is for the timevarying codec");
   const io::LebFile file = io::openLebFile(o.input);
   const ref::LebStream& s = file.stream;
-  if (!o.gradientsOut.empty() && !s.channel(ref::LebChannelKind::Gradients))
-    throw conf::UsageError(o.input.string() + " has no gradients channel (encoded with --no-gradients)");
+  if (!o.gradientsOut.empty() && !s.hasGradients())
+    throw conf::UsageError(o.input.string() + " has no gradients (encoded with --no-gradients)");
   // What decoding will map and allocate is known from the header (the stream, the samples and
   // their gradients, the padding that predictions reach): refused here, before any of it is
   // mapped, when it exceeds what this process may still map.

@@ -29,6 +29,7 @@ struct EncodeOptions {
   int pageBits = 12;                // leb: 2^pageBits points per page
   std::string lebCoder = "lead1";   // leb: the pages' entropy stage, lead1 (the paper's) or adaptive
   bool noGradients = false;         // leb: data channel only
+  bool deriveGradients = false;     // leb: data channel only, the gradients derived when decoded
   std::filesystem::path boundsOut;  // leb: also write the per-diamond bounds (reference/iso/BOUNDS_FORMAT.md)
   std::filesystem::path out;
 };

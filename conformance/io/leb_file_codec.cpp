@@ -143,7 +143,8 @@ std::vector<MappedFile*> present(std::initializer_list<MappedFile*> files) {
 
 std::uint64_t lebFileEncodeAddressBytes(const ref::Dims3& dims, VoxelType type, const ref::LebEncodeOptions& o) {
   const std::uint64_t samples = ref::sampleCount(dims);
-  return samples * bytesPerSample(type) + (o.gradients ? 3 * samples : 0) + ref::lebEncodeToMemoryBytes(dims, o);
+  return samples * bytesPerSample(type) + (ref::lebStoresGradients(o) ? 3 * samples : 0) +
+         ref::lebEncodeToMemoryBytes(dims, o);
 }
 
 LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& dims, VoxelType type,
@@ -153,7 +154,7 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
   AtomicOutput output(out);
   std::optional<ScratchFile> gradientsFile;
   std::optional<MappedFile> gradients;
-  if (options.gradients) {
+  if (ref::lebStoresGradients(options)) {  // a stream that derives them needs none
     gradientsFile.emplace(output, out, "gradients");
     gradients = MappedFile::create(gradientsFile->path(), 3 * ref::sampleCount(dims), out);
   }
@@ -184,7 +185,7 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
   const std::uint64_t samples = ref::sampleCount(s.dims);
   return s.bytes.size() + samples * static_cast<std::uint64_t>(s.sampleBits / 8) +
-         (s.channel(ref::LebChannelKind::Gradients) ? 3 * samples : 0) +
+         (s.hasGradients() ? 3 * samples : 0) +
          ref::LebPadding::shellPoints(s.grid, s.dims) * ref::LebPadding::kBytesPerPoint;
 }
 
@@ -192,10 +193,11 @@ LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
                          const std::filesystem::path& gradientsOut, int threads, std::uint64_t budget,
                          const LebProgress& progress) {
   const ref::LebStream& s = input.stream;
-  const bool hasGradients = s.channel(ref::LebChannelKind::Gradients) != nullptr;
-  if (!gradientsOut.empty() && !hasGradients)
-    throw std::invalid_argument(input.file->path().string() +
-                                " has no gradients channel (encoded with --no-gradients)");
+  if (!gradientsOut.empty() && !s.hasGradients())
+    throw std::invalid_argument(input.file->path().string() + " has no gradients (encoded with --no-gradients)");
+  // A gradients channel is decoded whether wanted or not (into a scratch file when not); derived
+  // gradients are computed only when wanted.
+  const bool hasGradients = s.channel(ref::LebChannelKind::Gradients) != nullptr || !gradientsOut.empty();
   if (!gradientsOut.empty() && std::filesystem::weakly_canonical(out).lexically_normal() ==
                                    std::filesystem::weakly_canonical(gradientsOut).lexically_normal())
     throw IoError("cannot write " + gradientsOut.string() + " twice: two outputs name the same file");

@@ -46,9 +46,9 @@ FieldSample DenseGridField::at(const GridPoint& p) {
 
 CompressedGridField::CompressedGridField(std::shared_ptr<const LebStream> stream, std::size_t pageCacheBytes)
     : grid_(stream->grid), dims_(stream->dims), reader_(stream, pageCacheBytes) {
-  if (stream->channel(LebChannelKind::Gradients) == nullptr)
+  if (!stream->hasGradients())
     throw std::invalid_argument(
-        "the stream has no gradients channel (encoded with --no-gradients): isosurfaces need the gradients for "
+        "the stream has no gradients (encoded with --no-gradients): isosurfaces need the gradients for "
         "shading");
 }
 

@@ -22,14 +22,12 @@ namespace voxref::ref {
 std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& volume);
 
 // The central-difference gradient of the sample at (x, y, z) (one-sided on the faces, 0 along an
-// axis of extent 1), in sample units per sample spacing, of samples of extents d at `samples`.
-template <class T>
-std::array<double, 3> centralGradient(const T* samples, const Dims3& d, int x, int y, int z) {
-  const auto at = [&](const int q[3]) {
-    return static_cast<double>(samples[static_cast<std::size_t>(q[0]) +
-                                       static_cast<std::size_t>(d[0]) *
-                                           (static_cast<std::size_t>(q[1]) + static_cast<std::size_t>(d[1]) * q[2])]);
-  };
+// axis of extent 1), in sample units per sample spacing, of a volume of extents d whose sample at
+// (qx, qy, qz) is sampleAt(qx, qy, qz) (it asks only for the six axis neighbours inside the volume,
+// or (x, y, z) itself on a face). Random access into a stream that derives its gradients calls it
+// with its own reconstruction (leb_reader.cpp); centralGradient with an array.
+template <class SampleAt>
+std::array<double, 3> centralGradientAt(SampleAt&& sampleAt, const Dims3& d, int x, int y, int z) {
   const int p[3] = {x, y, z};
   std::array<double, 3> g{0, 0, 0};
   for (int a = 0; a < 3; ++a) {
@@ -37,9 +35,24 @@ std::array<double, 3> centralGradient(const T* samples, const Dims3& d, int x, i
     int lo[3] = {x, y, z}, hi[3] = {x, y, z};
     lo[a] = p[a] > 0 ? p[a] - 1 : p[a];
     hi[a] = p[a] + 1 < d[a] ? p[a] + 1 : p[a];
-    g[static_cast<std::size_t>(a)] = (at(hi) - at(lo)) / (hi[a] - lo[a]);
+    g[static_cast<std::size_t>(a)] =
+        (static_cast<double>(sampleAt(hi[0], hi[1], hi[2])) - static_cast<double>(sampleAt(lo[0], lo[1], lo[2]))) /
+        (hi[a] - lo[a]);
   }
   return g;
+}
+
+// centralGradientAt of samples of extents d at `samples` (x fastest).
+template <class T>
+std::array<double, 3> centralGradient(const T* samples, const Dims3& d, int x, int y, int z) {
+  return centralGradientAt(
+      [&](int qx, int qy, int qz) {
+        return samples[static_cast<std::size_t>(qx) +
+                       static_cast<std::size_t>(d[0]) *
+                           (static_cast<std::size_t>(qy) +
+                            static_cast<std::size_t>(d[1]) * static_cast<std::size_t>(qz))];
+      },
+      d, x, y, z);
 }
 
 // g / |g| as snorm8, round(127 c) per component, into out[0..2]; (0, 0, 0) for a zero gradient.

@@ -448,7 +448,9 @@ void checkSpan(const LebVolumeIn& v, const LebEncodeOptions& o) {
   if ((v.data8 == nullptr) == (v.data16 == nullptr))
     throw std::invalid_argument("the LEB encoder needs the samples at 8 bits or at 16, exactly one of them");
   if (v.data8 && v.sampleBits != 8) throw std::invalid_argument("8-bit storage holds 8-bit samples only");
-  if (o.gradients && !v.gradients) throw std::invalid_argument("the gradients channel needs the gradients");
+  if (o.deriveGradients && !o.gradients)
+    throw std::invalid_argument("deriving the gradients needs gradients: options.gradients is false");
+  if (lebStoresGradients(o) && !v.gradients) throw std::invalid_argument("the gradients channel needs the gradients");
   checkPageBits(o.pageBits);
 }
 
@@ -467,10 +469,10 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
   const LebGrid grid = lebGridCovering(v.dims);
   const HzOrder order(grid);
   std::vector<LebChannelKind> kinds{LebChannelKind::Data};
-  if (o.gradients) kinds.push_back(LebChannelKind::Gradients);
+  if (lebStoresGradients(o)) kinds.push_back(LebChannelKind::Gradients);
   std::uint64_t offset = kLebHeaderBytes;
   // The work of a channel is in proportion to its components (1 and 3).
-  const double total = o.gradients ? 4.0 : 1.0;
+  const double total = lebStoresGradients(o) ? 4.0 : 1.0;
   double done = 0.0;
   for (LebChannelKind kind : kinds) {
     const ChannelSpec spec = specOf(kind, v.sampleBits);
@@ -478,7 +480,8 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
                            {done / total, spec.components / total}, write, offset);
     done += spec.components;
   }
-  write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, static_cast<int>(kinds.size()), offset, o.coder));
+  write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, static_cast<int>(kinds.size()), offset, o.coder,
+                          o.gradients && o.deriveGradients));
   return offset;
 }
 
@@ -494,10 +497,10 @@ std::string encodeLeb(const LebVolumeIn& v, const LebEncodeOptions& o) {
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& o) {
   checkSamples(volume, sampleBits);
   std::vector<std::int8_t> gradients;
-  if (o.gradients) gradients = quantizedGradients(volume);
-  return encodeLeb(
-      LebVolumeIn{volume.dims(), sampleBits, nullptr, volume.data().data(), o.gradients ? gradients.data() : nullptr},
-      o);
+  if (lebStoresGradients(o)) gradients = quantizedGradients(volume);
+  return encodeLeb(LebVolumeIn{volume.dims(), sampleBits, nullptr, volume.data().data(),
+                               lebStoresGradients(o) ? gradients.data() : nullptr},
+                   o);
 }
 
 std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& o) {
@@ -511,7 +514,7 @@ std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& 
   // and the descriptor made from it.
   const std::uint64_t runs = runsOf(pages);
   const std::uint64_t tables = runs * 96 + std::min(runs, samples) * (17 * 17 * 8 + 64) + stored * 2 * 24;
-  return shell + inFlightBytes(samples, o.gradients ? 3 : 1, o) + tables;
+  return shell + inFlightBytes(samples, lebStoresGradients(o) ? 3 : 1, o) + tables;
 }
 
 std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o) {
@@ -519,15 +522,13 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
   const std::uint64_t stored = std::min(lebPageCount(lebGridCovering(dims), o.pageBits), samples);
   // The stream: under 4 bytes a value, a flush byte per page, the descriptors; a growing string
   // holds up to three times that while it moves.
-  const std::uint64_t stream = 4 * samples * (o.gradients ? 4 : 1) + stored * 2 * 16 + 4096;
-  return lebEncodeToMemoryBytes(dims, o) + (o.gradients ? 3 * samples : 0) + 3 * stream;
+  const std::uint64_t stream = 4 * samples * (lebStoresGradients(o) ? 4 : 1) + stored * 2 * 16 + 4096;
+  return lebEncodeToMemoryBytes(dims, o) + (lebStoresGradients(o) ? 3 * samples : 0) + 3 * stream;
 }
 
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
   const std::uint64_t samples = sampleCount(s.dims);
-  std::uint64_t bytes = 2 * samples;
-  for (const LebChannel& c : s.channels)
-    if (c.kind == LebChannelKind::Gradients) bytes += 3 * samples;
+  const std::uint64_t bytes = (s.hasGradients() ? 5 : 2) * samples;
   return bytes + LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint;  // one channel's shell at a time
 }
 
@@ -541,12 +542,40 @@ std::uint64_t slabKey(const GridPoint& p) {
   return ((c(2) >> kSlabSideLog2) << 42) | ((c(1) >> kSlabSideLog2) << 21) | c(0);
 }
 
+// The whole decode's work in units of one component's reconstruction: the gradients channel's
+// three, or the derivation of the gradients, one (it reads the samples once, and is cheaper than a
+// component's walk).
+double workUnits(const LebStream& s) {
+  return static_cast<double>(s.channels.size() > 1 ? 4 : 1) + (s.derivedGradients ? 1.0 : 0.0);
+}
+
+// The gradients of a stream that derives them (FORMAT.md, header byte 23): quantizedGradientSlice
+// of the decoded samples, slices in parallel, in batches with the window between them (a slice
+// reads its own samples and those of the slices beside it).
+void deriveGradients(const LebVolumeOut& out, int threads, const LebWindow& window, WorkSpan part) {
+  const Dims3& d = out.dims;
+  const std::size_t slice = 3 * static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]);
+  inBatches(d[2], threads, window, part, [&](int first, int end) {
+    parallelFor(end - first, threads, [&](int i) {
+      const int z = first + i;
+      std::int8_t* target = out.gradients + slice * static_cast<std::size_t>(z);
+      if (out.data8)
+        quantizedGradientSlice(out.data8, d, z, target);
+      else
+        quantizedGradientSlice(out.data16, d, z, target);
+    });
+  });
+}
+
 }  // namespace
 
 void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, const LebWindow& window) {
-  const bool hasGradients = s.channel(LebChannelKind::Gradients) != nullptr;
+  const bool hasGradients = s.hasGradients();
+  // A stream that derives its gradients gives them when asked (out.gradients set), one that stores
+  // them always (they are decoded with the pages).
+  const bool gradientsFit = s.derivedGradients ? true : (out.gradients != nullptr) == hasGradients;
   if (out.dims != s.dims || out.sampleBits != s.sampleBits || (out.data8 == nullptr) == (out.data16 == nullptr) ||
-      (out.data8 && s.sampleBits != 8) || (out.gradients != nullptr) != hasGradients)
+      (out.data8 && s.sampleBits != 8) || !gradientsFit)
     throw std::invalid_argument("decodeLebInto: the output does not match the stream's " + dimsText(s.dims) + " uint" +
                                 std::to_string(s.sampleBits) + (hasGradients ? " with gradients" : ""));
   const HzOrder order(s.grid);
@@ -609,7 +638,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
       const int perBatch = static_cast<int>(kPagesPerRun);
       // The work so far: the channels before (in proportion to their components), then this
       // channel's indices up to this level's, and the level's share of them.
-      const double total = static_cast<double>(s.channels.size() > 1 ? 4 : 1), grid = static_cast<double>(order.size());
+      const double total = workUnits(s), grid = static_cast<double>(order.size());
       const WorkSpan part{(channelsDone + spec.components * static_cast<double>(begin) / grid) / total,
                           spec.components * static_cast<double>(end - begin) / grid / total};
       inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, part,
@@ -654,12 +683,14 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     if (!open.empty()) throw std::logic_error("LEB decode: a page outlived the grid");
     channelsDone += spec.components;
   }
+  if (s.derivedGradients && out.gradients)
+    deriveGradients(out, threads, window, {channelsDone / workUnits(s), 1.0 - channelsDone / workUnits(s)});
 }
 
 LebDecoded decodeLeb(const LebStream& s, int threads) {
   LebDecoded out;
   out.data = Volume<std::uint16_t>(s.dims);
-  if (s.channel(LebChannelKind::Gradients)) out.gradients.assign(3 * sampleCount(s.dims), 0);
+  if (s.hasGradients()) out.gradients.assign(3 * sampleCount(s.dims), 0);
   decodeLebInto(s,
                 LebVolumeOut{s.dims, s.sampleBits, nullptr, out.data.data().data(),
                              out.gradients.empty() ? nullptr : out.gradients.data()},

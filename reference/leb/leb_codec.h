@@ -10,7 +10,9 @@
 // pages (lead1_coder.h), or with the adaptive coder (options.coder; adaptive_delta_coder.h); only
 // pages that hold a point of the volume are stored. The gradients channel
 // (gradients.h) is predicted and coded the same way, its three components interleaved per point,
-// with a code of its own (so Table 1 can report data and gradients separately).
+// with a code of its own (so Table 1 can report data and gradients separately), unless the stream
+// derives its gradients (options.deriveGradients; FORMAT.md, header byte 23): then it has the data
+// channel alone, and a decoder computes quantizedGradients of the samples it decodes.
 //
 // Exactness: lossless; decodeLeb(parseLebStream(encodeLeb(v))) == v, bit for bit, and the
 // gradients equal quantizedGradients(v). Deterministic for any thread count.
@@ -41,11 +43,18 @@ struct LebEncodeOptions {
   // The pages' entropy stage: the paper's lead-1 Huffman code (a version 2 stream), or voxref's
   // adaptive range coder (version 3; adaptive_delta_coder.h): the same deltas, the same pages.
   LebCoder coder = LebCoder::Lead1;
+  // With `gradients`: store no gradients channel, and mark the stream as deriving them from its
+  // samples (voxref's own gradients are a function of the samples, gradients.h, so a decoder
+  // computes the same bytes). The span's gradients, if given, are not read: gradients of the
+  // caller's own (diffused ones) cannot be derived and need the channel.
+  bool deriveGradients = false;
 };
+// Whether the stream of these options has a gradients channel.
+inline bool lebStoresGradients(const LebEncodeOptions& o) { return o.gradients && !o.deriveGradients; }
 
 // A volume where the codec reads it (encoding) or writes it (decoding), x fastest: the samples at 8
 // bits (data8) or at 16 (data16), exactly one of them, and the gradients, 3 int8 per sample
-// (quantizedGradients), when the stream has that channel.
+// (quantizedGradients), when the stream has them (a channel, or derived).
 template <class Byte, class Word, class Signed>
 struct LebVolumeSpan {
   Dims3 dims{0, 0, 0};
@@ -62,7 +71,8 @@ using LebVolumeOut = LebVolumeSpan<std::uint8_t, std::uint16_t, std::int8_t>;
 using LebStreamWrite = std::function<void(std::uint64_t offset, std::string_view bytes)>;
 
 // Throws std::invalid_argument for sampleBits other than 8 or 16, a sample >= 2^sampleBits, page
-// bits outside [kMinLebPageBits, kMaxLebPageBits] or a volume larger than the largest grid.
+// bits outside [kMinLebPageBits, kMaxLebPageBits], a volume larger than the largest grid, or
+// deriveGradients without gradients.
 //
 // Memory: at most lebEncodeMemoryBytes(dims, options) beside the volume itself: the gradients (3
 // bytes per sample), the stream, and what encodeLebTo needs (below: the shell of padding that
@@ -73,7 +83,8 @@ using LebStreamWrite = std::function<void(std::uint64_t offset, std::string_view
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& options = {});
 // The same stream, handed to `write` as it is made (encodeLeb is this with a string for the
 // stream): the streaming encoder of files. Returns the stream's size. Throws as encodeLeb does, and
-// std::invalid_argument when the span lacks the samples or, with options.gradients, the gradients.
+// std::invalid_argument when the span lacks the samples or, with options.gradients and not
+// options.deriveGradients, the gradients.
 // Memory beside the span: the shell of padding, one batch of runs of 64 pages of deltas and of
 // coded pages per thread, and the page table (12 bytes per stored page); nothing proportional to
 // the volume.
@@ -91,8 +102,9 @@ struct LebDecoded {
   Volume<std::uint16_t> data;
   std::vector<std::int8_t> gradients;  // 3 per sample; empty when the stream has no gradients
 };
-// Decodes every page (checking its CRC-32 and its code) and reconstructs the volume. Throws
-// StreamError naming the page and offset of the first corrupt page.
+// Decodes every page (checking its CRC-32 and its code) and reconstructs the volume; a stream that
+// derives its gradients has them computed from the decoded samples (quantizedGradients), in
+// parallel by slices. Throws StreamError naming the page and offset of the first corrupt page.
 // Memory: at most lebDecodeMemoryBytes(stream), plus one small reader per open page: the volume
 // (2 bytes per sample) and its gradients (3 bytes per sample), plus the shell of padding that
 // predictions reach, one channel at a time (leb_padding.h; none for a volume that fills its grid).
@@ -104,9 +116,10 @@ LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
 std::uint64_t lebDecodeMemoryBytes(const LebStream& stream);
 // Decodes into `out` (decodeLeb is this with a volume of its own): out.dims and sampleBits must be
 // the stream's, data8 set for 8-bit samples and data16 for 16, gradients set exactly when the
-// stream has them (std::invalid_argument otherwise). window, if set, is called between batches.
-// Memory beside `out`: the shell of padding, one channel at a time, and one small reader per open
-// page.
+// stream has a gradients channel, or when it derives them and they are wanted
+// (std::invalid_argument otherwise). window, if set, is called between batches (of pages, then of slices of derived
+// gradients, which read the samples of their slice and the two beside it). Memory beside `out`: the shell of padding,
+// one channel at a time, and one small reader per open page.
 void decodeLebInto(const LebStream& stream, const LebVolumeOut& out, int threads = 0, const LebWindow& window = {});
 
 // The deltas the encoder codes for one channel, in stream order (points inside the volume only):

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/leb/gradients.h"
 #include "reference/leb/leb_page.h"
 #include "reference/leb/prediction.h"
 
@@ -51,8 +52,13 @@ const LebChannel& LebReader::channel(LebChannelKind kind) const {
   const LebChannel* c = stream_->channel(kind);
   if (!c)
     throw std::invalid_argument(std::string("the stream has no ") +
-                                (kind == LebChannelKind::Data ? "data" : "gradients") + " channel");
+                                (kind == LebChannelKind::Data ? "data" : "gradients") + " channel" +
+                                (stream_->derivedGradients ? " (it derives its gradients from the data)" : ""));
   return *c;
+}
+
+void LebReader::requireGradients() const {
+  if (!stream_->hasGradients()) throw std::invalid_argument("the stream has no gradients (encoded without them)");
 }
 
 LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
@@ -71,14 +77,19 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   }
   if ((want & ~have.channels) == 0) return have;
   const unsigned need = want & ~have.channels;
+  const bool inside = insideVolume(p, stream_->dims);
+  // A stream that derives its gradients (FORMAT.md, header byte 23): a point inside the volume
+  // takes its gradient from its neighbours' samples (below), so its split edge gives the rest; one
+  // in the padding takes its prediction, as a padding point of a gradients channel does.
+  const bool derive = stream_->derivedGradients && (need & 2u) != 0;
+  const unsigned fromEdge = derive && inside ? need & ~2u : need;
   std::array<std::int32_t, 4> pred{0, 0, 0, 0};
   const LebPointClass pc = classifyPoint(grid, p);
-  if (pc.level >= 0) {
+  if (pc.level >= 0 && fromEdge != 0) {
     const SplitEdge e = splitEdgeOf(p, pc.scaleLog2, pc.oddAxes);
-    const Known a = valueAt(need, e.a), b = valueAt(need, e.b);
+    const Known a = valueAt(fromEdge, e.a), b = valueAt(fromEdge, e.b);
     for (std::size_t i = 0; i < 4; ++i) pred[i] = predictMidpoint(a.v[i], b.v[i]);
   }
-  const bool inside = insideVolume(p, stream_->dims);
   const std::uint64_t h = inside ? order_.index(p) : 0, page = h >> stream_->pageBits;
   for (const LebChannel& c : stream_->channels) {
     if (!(need & channelBit(c.kind))) continue;
@@ -99,6 +110,7 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
     }
     ++reconstructed_;
   }
+  if (derive) deriveGradient(p, inside, pred, have);
   have.channels |= need;
   // The slot, unless another point of this query holds it (the recursion may have filled it).
   if (slot.key == memoKey || slot.key == ~std::uint32_t{0} || slot.query != query_) {
@@ -114,6 +126,23 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   return have;
 }
 
+void LebReader::deriveGradient(const GridPoint& p, bool inside, const std::array<std::int32_t, 4>& pred, Known& have) {
+  if (!inside) {
+    for (std::size_t k = 1; k < 4; ++k) have.v[k] = pred[k];
+    return;
+  }
+  // gradients.h: the central differences of the samples, the same function the whole-volume
+  // decoder and the encoder apply to an array; here each sample is reconstructed (and memoised).
+  std::int8_t g[3];
+  quantizeGradient(centralGradientAt(
+                       [&](int x, int y, int z) {
+                         return valueAt(1u, GridPoint{x, y, z}).v[0];
+                       },
+                       stream_->dims, p[0], p[1], p[2]),
+                   g);
+  for (std::size_t k = 0; k < 3; ++k) have.v[k + 1] = g[k];
+}
+
 std::uint16_t LebReader::sample(const GridPoint& p) {
   beginQuery();
   return static_cast<std::uint16_t>(valueAt(channelBit(channel(LebChannelKind::Data).kind), p).v[0]);
@@ -121,13 +150,14 @@ std::uint16_t LebReader::sample(const GridPoint& p) {
 
 std::array<std::int8_t, 3> LebReader::gradient(const GridPoint& p) {
   beginQuery();
-  const Known k = valueAt(channelBit(channel(LebChannelKind::Gradients).kind), p);
+  requireGradients();
+  const Known k = valueAt(channelBit(LebChannelKind::Gradients), p);
   return {static_cast<std::int8_t>(k.v[1]), static_cast<std::int8_t>(k.v[2]), static_cast<std::int8_t>(k.v[3])};
 }
 
 LebReader::SampleAndGradient LebReader::sampleAndGradient(const GridPoint& p) {
   (void)channel(LebChannelKind::Data);
-  (void)channel(LebChannelKind::Gradients);
+  requireGradients();
   beginQuery();
   const Known k = valueAt(3u, p);
   return {static_cast<std::uint16_t>(k.v[0]),

@@ -15,19 +15,20 @@
 // query's own (emptied when the next query begins), so a point is still reconstructed at most
 // once per query, whatever the table's size. Neighbouring queries share their coarse ancestors,
 // so a query in a region already visited reconstructs little more than its own point.
-// Bit-identical to decodeLeb.
+// Bit-identical to decodeLeb. A stream that derives its gradients (FORMAT.md, header byte 23)
+// gives a point's gradient from its six neighbours' samples, reconstructed (and memoised) the same
+// way: seven samples instead of one gradient.
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
 // at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo: kMemoSlotBytes a
 // slot, the power of two of slots at most cacheBudgetBytes / kMemoSlotBytes (at least
 // kMinMemoSlots, and no more than the grid's bricks need), plus the query's own table (the
 // points of one query that met a slot taken in the same query: at most its points and their
-// coarser split-edge ancestors), plus reconstructPage's result, 2^pageBits x components x 4 bytes
-// (at most 12 MiB).
-// Nothing is allocated in proportion to the whole grid. Errors: StreamError for a corrupt
-// page (when it is decoded), std::invalid_argument for a point outside the grid or a channel the
-// stream lacks, and from the constructor for a grid past kMaxIndexedLebK (its memo keys are 32-bit
-// linear indices). Not thread-safe: use one reader per thread (they can share the stream).
+// coarser split-edge ancestors, and with derived gradients their six neighbours and theirs), plus reconstructPage's
+// result, 2^pageBits x components x 4 bytes (at most 12 MiB). Nothing is allocated in proportion to the whole grid.
+// Errors: StreamError for a corrupt page (when it is decoded), std::invalid_argument for a point outside the grid or a
+// channel the stream lacks, and from the constructor for a grid past kMaxIndexedLebK (its memo keys are 32-bit linear
+// indices). Not thread-safe: use one reader per thread (they can share the stream).
 #pragma once
 
 #include <array>
@@ -81,6 +82,10 @@ class LebReader {
   // The channels of `want` (and any the memo already knows) at p.
   Known valueAt(unsigned want, const GridPoint& p);
   const LebChannel& channel(LebChannelKind kind) const;
+  void requireGradients() const;  // throws std::invalid_argument unless the stream has gradients
+  // The gradient of p into have.v[1..3] for a stream that derives its gradients: from the
+  // neighbours' samples (gradients.h, centralGradientAt) inside the volume, else the prediction.
+  void deriveGradient(const GridPoint& p, bool inside, const std::array<std::int32_t, 4>& pred, Known& have);
   static unsigned channelBit(LebChannelKind kind) { return kind == LebChannelKind::Data ? 1u : 2u; }
 
   // A memo slot: the point's linear index (all ones: empty), the query that wrote it, the data

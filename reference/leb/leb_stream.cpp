@@ -36,7 +36,7 @@ std::uint64_t LebChannelTable::payloadBytes() const {
 }
 
 std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
-                           std::uint64_t totalBytes, LebCoder coder) {
+                           std::uint64_t totalBytes, LebCoder coder, bool derivedGradients) {
   // FORMAT.md section 1.
   ByteWriter w;
   w.bytes("VXLB", 4);
@@ -47,7 +47,7 @@ std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& gri
   w.le<std::uint8_t>(static_cast<std::uint8_t>(pageBits));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(channelCount));
   w.le<std::uint8_t>(static_cast<std::uint8_t>(coder));
-  w.le<std::uint8_t>(0);
+  w.le<std::uint8_t>(derivedGradients ? 1 : 0);
   w.le<std::uint64_t>(totalBytes);
   w.le<std::uint32_t>(crc32(w.str()));
   return std::move(w.str());
@@ -124,7 +124,12 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
     r.fail(coderAt, "coder: a version " + std::to_string(version) + " stream has coder " +
                         (version == kLebVersion ? "0 (lead-1)" : "1 (adaptive)") + ", got " + std::to_string(coder));
   s.coder = static_cast<LebCoder>(coder);
-  r.le<std::uint8_t>("reserved", 0, 0);
+  // Byte 23, the gradients: 1 when they are derived from the data (then no gradients channel).
+  const std::size_t gradientsAt = r.offset();
+  s.derivedGradients = r.le<std::uint8_t>("gradients", 0, 1) == 1;
+  if (s.derivedGradients && channelCount != 1)
+    r.fail(gradientsAt, "gradients: 1 (derived from the data) with " + std::to_string(channelCount) +
+                            " channels: a stream that derives its gradients has the data channel alone");
   const std::size_t totalAt = r.offset();
   const std::uint64_t total = r.le<std::uint64_t>("total_bytes");
   r.le<std::uint32_t>("header_crc");  // checked above

@@ -62,12 +62,17 @@ struct LebStream {
   LebGrid grid;
   int pageBits = 12;  // a page holds 2^pageBits consecutive hierarchical indices
   LebCoder coder = LebCoder::Lead1;
+  // FORMAT.md, header byte 23: the stream stores no gradients channel, and its gradients are those
+  // quantizedGradients (gradients.h) gives of its decoded samples.
+  bool derivedGradients = false;
   std::vector<LebChannel> channels;
 
   std::uint64_t pageCount() const;  // all pages of the grid, stored or not
   // The bytes of stored page slot j (LebChannel::slotOf).
   std::string_view page(const LebChannel& c, std::size_t slot) const;
   const LebChannel* channel(LebChannelKind kind) const;
+  // Whether a decoder gives gradients: a gradients channel, or gradients derived from the data.
+  bool hasGradients() const { return derivedGradients || channel(LebChannelKind::Gradients) != nullptr; }
 };
 
 inline constexpr std::size_t kLebHeaderBytes = 36;
@@ -92,9 +97,9 @@ struct LebChannelTable {
   std::uint64_t payloadBytes() const;
 };
 // The header (section 1) of a stream of `totalBytes` bytes with `channelCount` channels, its
-// version the coder's (lebVersionOf).
+// version the coder's (lebVersionOf); `derivedGradients` sets byte 23 (then channelCount is 1).
 std::string lebHeaderBytes(const Dims3& dims, int sampleBits, const LebGrid& grid, int pageBits, int channelCount,
-                           std::uint64_t totalBytes, LebCoder coder = LebCoder::Lead1);
+                           std::uint64_t totalBytes, LebCoder coder = LebCoder::Lead1, bool derivedGradients = false);
 // The descriptor of a channel (section 2) among `pageCount` pages, with its CRC-32; exactly
 // lebDescriptorSize(valueBits, storedPage.size(), coder) bytes (the code lengths only for lead-1).
 // Throws std::invalid_argument for a table whose stored pages are not ascending below pageCount,

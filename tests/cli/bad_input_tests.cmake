@@ -174,13 +174,16 @@ voxref_bad_input(vxleb.unsupported_version MAKE "${leb_make}|u16:4=4|${hcrc}" CO
 voxref_bad_input(vxleb.version_1 MAKE "${leb_make}|u16:4=1|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
   EXPECT "<DIR>/bad\\.vxleb: offset 4: version: expected 2 \\(lead-1\\) or 3 \\(adaptive\\), got 1 \\(version 1 streams[^\n]*encode the volume again\\)")
 # Header byte 22, the coder, is the version's (a lead-1 stream relabelled as version 3, and a
-# version 2 stream claiming the adaptive coder), and byte 23 is reserved.
+# version 2 stream claiming the adaptive coder), and byte 23 (the gradients) is 0 or 1, and 1 only
+# without a gradients channel.
 voxref_bad_input(vxleb.version_3_with_lead1_coder MAKE "${leb_make}|u16:4=3|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
   EXPECT "<DIR>/bad\\.vxleb: offset 22: coder: a version 3 stream has coder 1 \\(adaptive\\), got 0")
 voxref_bad_input(vxleb.version_2_with_adaptive_coder MAKE "${leb_make}|u8:22=1|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
   EXPECT "<DIR>/bad\\.vxleb: offset 22: coder: a version 2 stream has coder 0 \\(lead-1\\), got 1")
-voxref_bad_input(vxleb.reserved MAKE "${leb_make}|u8:23=1|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
-  EXPECT "<DIR>/bad\\.vxleb: offset 23: reserved: expected 0\\.\\.0, got 1")
+voxref_bad_input(vxleb.gradients_byte MAKE "${leb_make}|u8:23=2|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
+  EXPECT "<DIR>/bad\\.vxleb: offset 23: gradients: expected 0\\.\\.1, got 2")
+voxref_bad_input(vxleb.derived_gradients_beside_a_channel MAKE "${leb_make}|u8:23=1|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
+  EXPECT "<DIR>/bad\\.vxleb: offset 23: gradients: 1 \\(derived from the data\\) with 2 channels")
 voxref_bad_input(vxleb.sample_bits MAKE "${leb_make}|u8:6=12|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
   EXPECT "<DIR>/bad\\.vxleb: offset 6: sample_bits: expected 8 or 16, got 12")
 voxref_bad_input(vxleb.k_not_the_smallest_grid MAKE "${leb_make}|u8:7=9|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb

@@ -32,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                              GridPoint{s->dims[0] - 1, s->dims[1] - 1, s->dims[2] - 1}}) {
     try {
       (void)reader.sample(p);
-      if (s->channel(LebChannelKind::Gradients)) (void)reader.gradient(p);
+      if (s->hasGradients()) (void)reader.gradient(p);  // a channel, or derived from the samples
     } catch (const StreamError&) {
     }
   }

@@ -18,11 +18,12 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir = argv[1];
   std::filesystem::create_directories(dir);
   auto write = [&](const std::string& name, const Volume<std::uint16_t>& v, int bits, int pageBits, bool gradients,
-                   LebCoder coder = LebCoder::Lead1) {
+                   LebCoder coder = LebCoder::Lead1, bool derive = false) {
     LebEncodeOptions o;
     o.pageBits = pageBits;
     o.gradients = gradients;
     o.coder = coder;
+    o.deriveGradients = derive;
     std::ofstream(dir / name, std::ios::binary) << encodeLeb(v, bits, o);
   };
   std::mt19937 rng(1);
@@ -42,5 +43,7 @@ int main(int argc, char** argv) {
   write("adaptive_smooth_gradients.vxleb", smooth, 8, 4, true, LebCoder::Adaptive);
   write("adaptive_noise.vxleb", noise, 8, 6, true, LebCoder::Adaptive);
   write("adaptive_wide16.vxleb", wide, 16, 4, false, LebCoder::Adaptive);
+  write("derived_smooth.vxleb", smooth, 8, 4, true, LebCoder::Lead1, true);  // header byte 23 = 1
+  write("adaptive_derived_wide16.vxleb", wide, 16, 4, true, LebCoder::Adaptive, true);
   return 0;
 }

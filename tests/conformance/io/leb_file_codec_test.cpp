@@ -57,6 +57,23 @@ TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
     EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
     EXPECT_EQ(dec.trims > 0, window == 1);
   }
+  // A stream that derives its gradients: the stream encodeLeb makes with the option, and the same
+  // gradients from the decoder, computed only when asked for.
+  ref::LebEncodeOptions derive;
+  derive.deriveGradients = true;
+  const std::string derived = ref::encodeLeb(v, c.bits, derive);
+  for (const std::uint64_t window : {kLebWindowBytes, std::uint64_t{1}}) {
+    SCOPED_TRACE(window);
+    encodeLebFile(raw, c.dims, type, stream, derive, window);
+    EXPECT_EQ(readWholeFile(stream), derived);
+    std::filesystem::remove(grads);
+    decodeLebFile(openLebFile(stream), back, {}, 0, window);
+    EXPECT_EQ(readWholeFile(back), readWholeFile(raw));
+    EXPECT_FALSE(std::filesystem::exists(grads));
+    decodeLebFile(openLebFile(stream), back, grads, 0, window);
+    const std::vector<std::int8_t> g = ref::quantizedGradients(v);
+    EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
+  }
   for (const auto& p : std::filesystem::directory_iterator(raw.parent_path()))
     EXPECT_EQ(p.path().filename().string().find(".tmp"), std::string::npos) << p.path() << " was left behind";
 }

@@ -13,30 +13,14 @@
 #include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_page.h"
 #include "reference/leb/leb_reader.h"
+#include "tests/reference/leb/leb_test_volumes.h"
 
 namespace voxref::ref {
 namespace {
 
-Volume<std::uint16_t> noise(const Dims3& d, int bits, unsigned seed) {
-  Volume<std::uint16_t> v(d);
-  std::mt19937 rng(seed);
-  for (auto& s : v.data()) s = static_cast<std::uint16_t>(rng() & ((1u << bits) - 1));
-  return v;
-}
-
-// A smooth field with some structure (so predictions are mostly good).
-Volume<std::uint16_t> smooth(const Dims3& d, int bits) {
-  Volume<std::uint16_t> v(d);
-  const double top = (1 << bits) - 1;
-  for (int z = 0; z < d[2]; ++z)
-    for (int y = 0; y < d[1]; ++y)
-      for (int x = 0; x < d[0]; ++x)
-        v.at(x, y, z) =
-            static_cast<std::uint16_t>(top * (0.5 + 0.5 * std::sin(0.21 * x + 0.13 * y * y / (1.0 + y) - 0.17 * z)));
-  return v;
-}
-
-constexpr LebCoder kCoders[] = {LebCoder::Lead1, LebCoder::Adaptive};
+using test_support::noise;
+using test_support::smooth;
+constexpr const auto& kCoders = test_support::kLebCoders;
 
 void expectRoundTrip(const Volume<std::uint16_t>& v, int bits, int pageBits, const std::string& what, LebCoder coder) {
   SCOPED_TRACE(what + ", page bits " + std::to_string(pageBits) + ", coder " + std::string(lebCoderName(coder)));
@@ -648,7 +632,7 @@ TEST_F(LebCorruptAdaptive, TheVersionAndTheCoderAgree) {
   EXPECT_EQ(errorWith(22, 0), "offset 22: coder: a version 3 stream has coder 1 (adaptive), got 0");
   EXPECT_EQ(errorWith(4, 2), "offset 22: coder: a version 2 stream has coder 0 (lead-1), got 1");
   EXPECT_EQ(errorWith(4, 4), "offset 4: version: expected 2 (lead-1) or 3 (adaptive), got 4");
-  EXPECT_EQ(errorWith(23, 1), "offset 23: reserved: expected 0..0, got 1");
+  EXPECT_EQ(errorWith(23, 2), "offset 23: gradients: expected 0..1, got 2");  // derived_gradients_test.cpp has 1
 }
 
 // A page cut short inside its values (length and CRCs made to agree): the adaptive reader names
