@@ -1,4 +1,4 @@
-// Streams that derive their gradients from the data (FORMAT.md, header byte 23;
+// Streams that derive their gradients from the data (reference/leb/FORMAT.md, header byte 23;
 // LebEncodeOptions::deriveGradients): what they hold, what the whole-volume decoder and random
 // access give, and what the parser refuses. The expected gradients come from the definition,
 // quantizeGradient of centralGradient per sample (gradients.h), not from the decoder's slices.
