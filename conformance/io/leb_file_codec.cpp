@@ -13,7 +13,6 @@
 #include "conformance/io/atomic_file.h"
 #include "conformance/io/mapped_file.h"
 #include "reference/common/byte_stream.h"
-#include "reference/common/parallel.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_padding.h"
 
@@ -85,16 +84,10 @@ InputSamples inputSamples(const std::filesystem::path& input, const ref::Dims3& 
 template <class T>
 void writeGradients(const T* samples, const ref::Dims3& d, MappedFile& file, int threads, ResidentWindow& window,
                     const LebProgress& progress) {
-  const std::size_t slice = 3 * static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]);
-  auto* out = reinterpret_cast<std::int8_t*>(file.data());
-  const int batch = 4 * ref::workerCount(threads);
-  for (int z0 = 0; z0 < d[2]; z0 += batch) {
-    ref::parallelFor(std::min(batch, d[2] - z0), threads, [&](int i) {
-      ref::quantizedGradientSlice(samples, d, z0 + i, out + slice * static_cast<std::size_t>(z0 + i));
-    });
+  ref::quantizedGradientsInto(samples, d, reinterpret_cast<std::int8_t*>(file.data()), threads, [&](double done) {
     window();
-    if (progress) progress(static_cast<double>(std::min(d[2], z0 + batch)) / d[2], "gradients");
-  }
+    if (progress) progress(done, "gradients");
+  });
 }
 
 // Writes at offsets into a file it created; throws IoError naming the destination.

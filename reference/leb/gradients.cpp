@@ -1,13 +1,42 @@
 #include "reference/leb/gradients.h"
 
+#include <algorithm>
+
+#include "reference/common/parallel.h"
+
 namespace voxref::ref {
 
-std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& v) {
-  const Dims3& d = v.dims();
-  std::vector<std::int8_t> out(3 * v.data().size(), 0);
+namespace {
+
+template <class T>
+void slicesInto(const T* samples, const Dims3& d, std::int8_t* out, int threads,
+                const std::function<void(double)>& afterBatch) {
   const std::size_t slice = 3 * static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]);
-  for (int z = 0; z < d[2]; ++z)
-    quantizedGradientSlice(v.data().data(), d, z, out.data() + slice * static_cast<std::size_t>(z));
+  const int batch = 4 * workerCount(threads);
+  for (int z0 = 0; z0 < d[2]; z0 += batch) {
+    const int z1 = std::min(d[2], z0 + batch);
+    parallelFor(z1 - z0, threads, [&](int i) {
+      quantizedGradientSlice(samples, d, z0 + i, out + slice * static_cast<std::size_t>(z0 + i));
+    });
+    if (afterBatch) afterBatch(static_cast<double>(z1) / d[2]);
+  }
+}
+
+}  // namespace
+
+void quantizedGradientsInto(const std::uint8_t* samples, const Dims3& d, std::int8_t* out, int threads,
+                            const std::function<void(double)>& afterBatch) {
+  slicesInto(samples, d, out, threads, afterBatch);
+}
+
+void quantizedGradientsInto(const std::uint16_t* samples, const Dims3& d, std::int8_t* out, int threads,
+                            const std::function<void(double)>& afterBatch) {
+  slicesInto(samples, d, out, threads, afterBatch);
+}
+
+std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& v) {
+  std::vector<std::int8_t> out(3 * v.data().size(), 0);
+  quantizedGradientsInto(v.data().data(), v.dims(), out.data(), 1);
   return out;
 }
 

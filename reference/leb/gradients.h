@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "reference/common/volume.h"
@@ -20,6 +21,16 @@ namespace voxref::ref {
 
 // Three int8 per sample, (gx, gy, gz), in the order of the volume's samples.
 std::vector<std::int8_t> quantizedGradients(const Volume<std::uint16_t>& volume);
+
+// The same bytes for samples of extents d at `samples` (8 or 16 bits, x fastest) into `out` (3 a
+// sample): quantizedGradientSlice for every slice, slices in parallel on up to `threads` threads
+// (parallel.h; 0: all cores), in batches of a few slices a worker; after each batch, on the calling
+// thread while no worker runs, afterBatch(the fraction of the slices done), if set (a caller whose
+// samples or output lie in file mappings trims them there). The same bytes for any thread count.
+void quantizedGradientsInto(const std::uint8_t* samples, const Dims3& d, std::int8_t* out, int threads,
+                            const std::function<void(double done)>& afterBatch = {});
+void quantizedGradientsInto(const std::uint16_t* samples, const Dims3& d, std::int8_t* out, int threads,
+                            const std::function<void(double done)>& afterBatch = {});
 
 // The central-difference gradient of the sample at (x, y, z) (one-sided on the faces, 0 along an
 // axis of extent 1), in sample units per sample spacing, of a volume of extents d whose sample at

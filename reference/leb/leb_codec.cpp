@@ -549,22 +549,16 @@ double workUnits(const LebStream& s) {
   return static_cast<double>(s.channels.size() > 1 ? 4 : 1) + (s.derivedGradients ? 1.0 : 0.0);
 }
 
-// The gradients of a stream that derives them (FORMAT.md, header byte 23): quantizedGradientSlice
-// of the decoded samples, slices in parallel, in batches with the window between them (a slice
-// reads its own samples and those of the slices beside it).
+// The gradients of a stream that derives them (FORMAT.md, header byte 23): those of the decoded
+// samples, in batches of slices with the window between them (a slice reads its own samples and
+// those of the slices beside it).
 void deriveGradients(const LebVolumeOut& out, int threads, const LebWindow& window, WorkSpan part) {
-  const Dims3& d = out.dims;
-  const std::size_t slice = 3 * static_cast<std::size_t>(d[0]) * static_cast<std::size_t>(d[1]);
-  inBatches(d[2], threads, window, part, [&](int first, int end) {
-    parallelFor(end - first, threads, [&](int i) {
-      const int z = first + i;
-      std::int8_t* target = out.gradients + slice * static_cast<std::size_t>(z);
-      if (out.data8)
-        quantizedGradientSlice(out.data8, d, z, target);
-      else
-        quantizedGradientSlice(out.data16, d, z, target);
-    });
-  });
+  std::function<void(double)> afterBatch;
+  if (window) afterBatch = [&](double done) { window(part.base + part.span * done); };
+  if (out.data8)
+    quantizedGradientsInto(out.data8, out.dims, out.gradients, threads, afterBatch);
+  else
+    quantizedGradientsInto(out.data16, out.dims, out.gradients, threads, afterBatch);
 }
 
 }  // namespace

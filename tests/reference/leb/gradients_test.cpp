@@ -1,5 +1,6 @@
 #include "reference/leb/gradients.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -99,6 +100,30 @@ TEST(QuantizedGradients, EverySampleOfARandomVolumeIsTheDefinitions) {
           const std::size_t at = 3 * v.index(x, y, z);
           for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(g[at + c], want[c]) << bits << " bits at " << x << y << z;
         }
+  }
+}
+
+// quantizedGradientsInto: the bytes of quantizedGradients on any thread count, for 8- and 16-bit
+// samples, and afterBatch told a rising fraction that ends at 1.
+TEST(QuantizedGradients, IntoGivesTheSameBytesOnEveryThreadCount) {
+  Volume<std::uint16_t> v({13, 11, 29});
+  std::uint32_t state = 99;
+  for (auto& s : v.data()) {
+    state = state * 1664525u + 1013904223u;
+    s = static_cast<std::uint16_t>((state >> 9) & 255);
+  }
+  const std::vector<std::int8_t> want = quantizedGradients(v);
+  const std::vector<std::uint8_t> narrow(v.data().begin(), v.data().end());
+  for (const int threads : {1, 2, 3}) {
+    std::vector<std::int8_t> got8(want.size(), 0), got16(want.size(), 0);
+    std::vector<double> seen;
+    quantizedGradientsInto(narrow.data(), v.dims(), got8.data(), threads, [&](double done) { seen.push_back(done); });
+    quantizedGradientsInto(v.data().data(), v.dims(), got16.data(), threads);
+    EXPECT_EQ(got8, want) << threads;
+    EXPECT_EQ(got16, want) << threads;
+    ASSERT_FALSE(seen.empty());
+    EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+    EXPECT_DOUBLE_EQ(seen.back(), 1.0);
   }
 }
 
