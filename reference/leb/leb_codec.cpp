@@ -481,7 +481,7 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
     done += spec.components;
   }
   write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, static_cast<int>(kinds.size()), offset, o.coder,
-                          o.gradients && o.deriveGradients));
+                          o.deriveGradients));  // checkSpan: deriveGradients implies gradients
   return offset;
 }
 
@@ -496,10 +496,10 @@ std::string encodeLeb(const LebVolumeIn& v, const LebEncodeOptions& o) {
 
 std::string encodeLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebEncodeOptions& o) {
   checkSamples(volume, sampleBits);
-  std::vector<std::int8_t> gradients;
-  if (lebStoresGradients(o)) gradients = quantizedGradients(volume);
+  const std::vector<std::int8_t> gradients =
+      lebStoresGradients(o) ? quantizedGradients(volume) : std::vector<std::int8_t>{};
   return encodeLeb(LebVolumeIn{volume.dims(), sampleBits, nullptr, volume.data().data(),
-                               lebStoresGradients(o) ? gradients.data() : nullptr},
+                               gradients.empty() ? nullptr : gradients.data()},
                    o);
 }
 
@@ -542,13 +542,6 @@ std::uint64_t slabKey(const GridPoint& p) {
   return ((c(2) >> kSlabSideLog2) << 42) | ((c(1) >> kSlabSideLog2) << 21) | c(0);
 }
 
-// The whole decode's work in units of one component's reconstruction: the gradients channel's
-// three, or the derivation of the gradients, one (it reads the samples once, and is cheaper than a
-// component's walk).
-double workUnits(const LebStream& s) {
-  return static_cast<double>(s.channels.size() > 1 ? 4 : 1) + (s.derivedGradients ? 1.0 : 0.0);
-}
-
 // The gradients of a stream that derives them (FORMAT.md, header byte 23): those of the decoded
 // samples, in batches of slices with the window between them (a slice reads its own samples and
 // those of the slices beside it).
@@ -567,13 +560,17 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
   const bool hasGradients = s.hasGradients();
   // A stream that derives its gradients gives them when asked (out.gradients set), one that stores
   // them always (they are decoded with the pages).
-  const bool gradientsFit = s.derivedGradients ? true : (out.gradients != nullptr) == hasGradients;
+  const bool derive = s.derivedGradients && out.gradients != nullptr;
   if (out.dims != s.dims || out.sampleBits != s.sampleBits || (out.data8 == nullptr) == (out.data16 == nullptr) ||
-      (out.data8 && s.sampleBits != 8) || !gradientsFit)
+      (out.data8 && s.sampleBits != 8) || !(s.derivedGradients || (out.gradients != nullptr) == hasGradients))
     throw std::invalid_argument("decodeLebInto: the output does not match the stream's " + dimsText(s.dims) + " uint" +
                                 std::to_string(s.sampleBits) + (hasGradients ? " with gradients" : ""));
   const HzOrder order(s.grid);
   const int pb = s.pageBits;
+  // The work in units of one component's reconstruction: the data's one, a gradients channel's
+  // three, the derivation of the gradients one (it reads the samples once, and is cheaper than a
+  // component's walk).
+  const double workUnits = static_cast<double>(s.channels.size() > 1 ? 4 : 1) + (derive ? 1.0 : 0.0);
   double channelsDone = 0.0;
   for (const LebChannel& ch : s.channels) {
     const ChannelSpec spec = specOf(ch);
@@ -632,7 +629,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
       const int perBatch = static_cast<int>(kPagesPerRun);
       // The work so far: the channels before (in proportion to their components), then this
       // channel's indices up to this level's, and the level's share of them.
-      const double total = workUnits(s), grid = static_cast<double>(order.size());
+      const double total = workUnits, grid = static_cast<double>(order.size());
       const WorkSpan part{(channelsDone + spec.components * static_cast<double>(begin) / grid) / total,
                           spec.components * static_cast<double>(end - begin) / grid / total};
       inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, part,
@@ -677,8 +674,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     if (!open.empty()) throw std::logic_error("LEB decode: a page outlived the grid");
     channelsDone += spec.components;
   }
-  if (s.derivedGradients && out.gradients)
-    deriveGradients(out, threads, window, {channelsDone / workUnits(s), 1.0 - channelsDone / workUnits(s)});
+  if (derive) deriveGradients(out, threads, window, {channelsDone / workUnits, 1.0 - channelsDone / workUnits});
 }
 
 LebDecoded decodeLeb(const LebStream& s, int threads) {

@@ -123,8 +123,12 @@ TEST(DerivedGradients, TheGradientsAreDerivedWhenAskedAndCountInTheMemoryBound) 
   const LebStream stored = parseLebStream(encodeWith(v, 8, 12, LebCoder::Lead1, true, false));
   EXPECT_EQ(lebDecodeMemoryBytes(derived), lebDecodeMemoryBytes(stored));
   Volume<std::uint16_t> data(v.dims());
-  decodeLebInto(derived, LebVolumeOut{v.dims(), 8, nullptr, data.data().data(), nullptr});
+  std::vector<double> seen;
+  decodeLebInto(derived, LebVolumeOut{v.dims(), 8, nullptr, data.data().data(), nullptr}, 0,
+                [&](double done) { seen.push_back(done); });
   EXPECT_EQ(data.data(), v.data());
+  ASSERT_FALSE(seen.empty());
+  EXPECT_DOUBLE_EQ(seen.back(), 1.0);  // the work done is the work asked for
   EXPECT_THROW(decodeLebInto(stored, LebVolumeOut{v.dims(), 8, nullptr, data.data().data(), nullptr}),
                std::invalid_argument);
   LebEncodeOptions o;
