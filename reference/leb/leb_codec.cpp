@@ -118,7 +118,7 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
   const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
   auto onShell = [&](const GridPoint& p, int level, int scaleLog2, unsigned odd) {
     return predictPoint(p, level, scaleLog2, odd, Components,
-                        [&](const GridPoint& q, int k) { return padding.valueAt(q, k, inside); });
+                        [&](const GridPoint& q) { return padding.valuesAt(q, inside); });
   };
   // The prediction's components from the endpoints vi +- off, both inside the volume.
   auto betweenInside = [&](std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) {
@@ -277,9 +277,14 @@ void reconstructSegment(const HzOrder& order, const Dims3& dims, const LebPaddin
                     throw std::logic_error("LEB decode: the walk met more points than countInside");
                   const std::int32_t* delta = all.data() + taken;
                   taken += values;
-                  for (int q = 0; q < n; ++q)
-                    for (std::size_t c = 0; c < kComponents; ++c, ++pred, ++delta)
-                      target[kComponents * vi[q] + c] = storedValue<T>(*pred + *delta, mask);
+                  // A point's components are summed before any is stored: a store through the
+                  // output (a character type) may alias the predictions and deltas, which would
+                  // otherwise be loaded again after each store.
+                  for (int q = 0; q < n; ++q, pred += kComponents, delta += kComponents) {
+                    std::array<T, kComponents> sum;
+                    for (std::size_t c = 0; c < kComponents; ++c) sum[c] = storedValue<T>(pred[c] + delta[c], mask);
+                    std::copy_n(sum.data(), kComponents, target + kComponents * vi[q]);
+                  }
                 });
     if (taken != all.size()) throw std::logic_error("LEB decode: the walk met fewer points than countInside");
   });

@@ -36,15 +36,16 @@ inline std::size_t volumeIndex(const GridPoint& p, const Dims3& d) {
 
 // The prediction of p (of `level`, scale 2^scaleLog2, odd axes `oddAxes`: classifyPoint or an
 // HzOrder walk gives them) for `components` components, equation 1 on its split edge; a root
-// corner (level -1) is predicted as 0. valueAt(q, k) is component k at endpoint q.
-template <class ValueAt>
+// corner (level -1) is predicted as 0. valuesAt(q) gives the components at endpoint q (a padding
+// point's in one lookup of the shell).
+template <class ValuesAt>
 [[gnu::always_inline]] inline LebValues predictPoint(const GridPoint& p, int level, int scaleLog2, unsigned oddAxes,
-                                                     int components, ValueAt&& valueAt) {
+                                                     int components, ValuesAt&& valuesAt) {
   LebValues pred{0, 0, 0};
   if (level < 0) return pred;
   const SplitEdge e = splitEdgeOf(p, scaleLog2, oddAxes);
-  for (int k = 0; k < components; ++k)
-    pred[static_cast<std::size_t>(k)] = predictMidpoint(valueAt(e.a, k), valueAt(e.b, k));
+  const LebValues a = valuesAt(e.a), b = valuesAt(e.b);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(components); ++k) pred[k] = predictMidpoint(a[k], b[k]);
   return pred;
 }
 
@@ -58,13 +59,16 @@ class LebPadding {
   template <class Inside>
   void addLevel(int level, Inside&& inside);
 
-  // Component k at grid point q: inside(volumeIndex, k) inside the volume, else the shell's
-  // value. Throws std::logic_error for a padding point outside the shell (which the bound above
-  // excludes: reaching one is a defect of the codec, never of a stream).
+  // The components at grid point q: inside(volumeIndex, k) for each k inside the volume, else the
+  // shell's values. Throws std::logic_error for a padding point outside the shell (which the bound
+  // above excludes: reaching one is a defect of the codec, never of a stream).
   template <class Inside>
-  [[gnu::always_inline]] std::int32_t valueAt(const GridPoint& q, int k, Inside&& inside) const {
-    if (insideVolume(q, dims_)) return inside(volumeIndex(q, dims_), k);
-    return at(q)[static_cast<std::size_t>(k)];
+  [[gnu::always_inline]] LebValues valuesAt(const GridPoint& q, Inside&& inside) const {
+    if (!insideVolume(q, dims_)) return at(q);
+    LebValues r{0, 0, 0};
+    const std::size_t vi = volumeIndex(q, dims_);
+    for (int k = 0; k < components_; ++k) r[static_cast<std::size_t>(k)] = inside(vi, k);
+    return r;
   }
   const LebValues& at(const GridPoint& q) const;
   std::size_t size() const { return values_.size(); }
@@ -117,9 +121,8 @@ void LebPadding::forEachShellPoint(int level, F&& f) const {
 template <class Inside>
 void LebPadding::addLevel(int level, Inside&& inside) {
   forEachShellPoint(level, [&](const GridPoint& p, int scaleLog2, unsigned odd) {
-    values_.try_emplace(grid_.linearIndex(p),
-                        predictPoint(p, level, scaleLog2, odd, components_,
-                                     [&](const GridPoint& q, int k) { return valueAt(q, k, inside); }));
+    values_.try_emplace(grid_.linearIndex(p), predictPoint(p, level, scaleLog2, odd, components_,
+                                                           [&](const GridPoint& q) { return valuesAt(q, inside); }));
   });
 }
 
