@@ -179,7 +179,7 @@ std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
   const std::uint64_t samples = ref::sampleCount(s.dims);
   return s.bytes.size() + samples * static_cast<std::uint64_t>(s.sampleBits / 8) +
          (s.hasGradients() ? 3 * samples : 0) +
-         ref::LebPadding::shellPoints(s.grid, s.dims) * ref::LebPadding::kBytesPerPoint;
+         ref::LebPadding::shellPoints(s.grid, s.dims) * ref::LebPadding::kBytesPerPoint * s.channels.size();
 }
 
 LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,

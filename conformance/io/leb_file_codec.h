@@ -52,7 +52,7 @@ LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
                          const std::filesystem::path& gradientsOut, int threads = 0,
                          std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});
 // The address space decodeLebFile maps and allocates for `stream`: the stream, the volume and its
-// gradients mapped, and the shell of padding.
+// gradients mapped, and the shells of padding (one a channel).
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& stream);
 
 }  // namespace voxref::io

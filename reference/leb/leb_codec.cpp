@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -85,19 +86,59 @@ InsideValues insideOf(const Span& v, LebChannelKind kind) {
   return r;
 }
 
+// The values one channel's predictions read: `values` (those of `inside`, as their type, whose
+// component count is fixed at compile time) and the channel's shell of the padding.
+template <class T>
+struct ChannelValues {
+  static constexpr int kValues = componentsOf<T>();  // predictions a point
+  const T* values;
+  const LebPadding& padding;
+  const InsideValues& inside;
+  // The prediction's components from the split edge's endpoints vi +- off, both inside the volume.
+  void between(std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) const {
+    const T* a = values + kValues * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
+    const T* b = values + kValues * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+    for (int k = 0; k < kValues; ++k) pred[k] = predictMidpoint(a[k], b[k]);
+  }
+  // The prediction of p (of `level`, scale 2^scaleLog2, odd axes `odd`) whose split edge reaches
+  // the padding.
+  void onShell(const GridPoint& p, int level, int scaleLog2, unsigned odd, std::int32_t* pred) const {
+    const LebValues v = predictPoint(p, level, scaleLog2, odd, kValues,
+                                     [&](const GridPoint& q) { return padding.valuesAt(q, inside); });
+    std::copy_n(v.begin(), kValues, pred);
+  }
+};
+
+// A stream's data and gradients predicted in one walk (the whole-volume decoder): a point's
+// sample first, then its gradient's three components.
+template <class D>
+struct SampleAndGradientValues {
+  static constexpr int kValues = 4;
+  ChannelValues<D> data;
+  ChannelValues<std::int8_t> gradients;
+  void between(std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) const {
+    data.between(vi, off, pred);
+    gradients.between(vi, off, pred + 1);
+  }
+  void onShell(const GridPoint& p, int level, int scaleLog2, unsigned odd, std::int32_t* pred) const {
+    data.onShell(p, level, scaleLog2, odd, pred);
+    gradients.onShell(p, level, scaleLog2, odd, pred + 1);
+  }
+};
+
 // The walk both the encoder and the decoder make (section 3.1, steps 2-4 of the reconstruction):
 // the points inside the volume with index in [begin, end), in hierarchical order, each predicted
 // from its split edge (endpoints inside the volume from `inside`, in the padding from the shell,
-// leb_padding.h). pointsOf(h, vi, pred, n) takes n points at once: those with indices h, h + 1, ...,
-// h + n - 1, at volume indices vi[0..n), their predictions pred[Components q + k] (the encoder
-// reads the samples and records the deltas; the decoder reads the deltas and writes the samples).
-// The points of one call are of one level, whose predictions read only coarser ones, so a
-// consumer may take them in any order.
+// leb_padding.h) by `channels` (ChannelValues, or SampleAndGradientValues: Channels::kValues
+// predictions a point). pointsOf(h, vi, pred, n) takes n points at once: those with indices h,
+// h + 1, ..., h + n - 1, at volume indices vi[0..n), their predictions pred[kValues q + k] (the
+// encoder reads the samples and records the deltas; the decoder reads the deltas and writes the
+// samples). The points of one call are of one level, whose predictions read only coarser ones, so
+// a consumer may take them in any order.
 //
 // A point whose split-edge endpoints both lie inside the volume (all but the points next to the
 // padding) reads them at volume indices vi + off and vi - off: on every odd axis the edge runs
-// sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a. `values` are those of
-// `inside`, as their type, whose component count is fixed at compile time.
+// sigma = +-h from p (splitEdgeSigma), so off = sum of sigma_a * stride_a.
 //
 // The range is walked level by level. A level's part whose points all lie inside the volume
 // (HzOrder::allInside: nearly every page of a volume) goes by groups of cells
@@ -108,24 +149,11 @@ InsideValues insideOf(const Span& v, LebChannelKind kind) {
 // the others check each point, and a group's points are handed over in one call. The other parts
 // go a point at a time (HzOrder::forEachInside). The same points in the same order, with the same
 // predictions, either way.
-template <class T, class PointsOf>
-void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
-                 const T* values, std::uint64_t begin, std::uint64_t end, PointsOf&& pointsOf) {
-  constexpr int Components = componentsOf<T>();
-  auto read = [&](std::size_t vi, int k) {
-    return static_cast<std::int32_t>(values[Components * vi + static_cast<std::size_t>(k)]);
-  };
+template <class Channels, class PointsOf>
+void walkPoints(const HzOrder& order, const Dims3& dims, const Channels& channels, std::uint64_t begin,
+                std::uint64_t end, PointsOf&& pointsOf) {
+  constexpr int Components = Channels::kValues;
   const std::ptrdiff_t stride[3] = {1, dims[0], static_cast<std::ptrdiff_t>(dims[0]) * dims[1]};
-  auto onShell = [&](const GridPoint& p, int level, int scaleLog2, unsigned odd) {
-    return predictPoint(p, level, scaleLog2, odd, Components,
-                        [&](const GridPoint& q) { return padding.valuesAt(q, inside); });
-  };
-  // The prediction's components from the endpoints vi +- off, both inside the volume.
-  auto betweenInside = [&](std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) {
-    const auto a = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
-    const auto b = static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
-    for (int k = 0; k < Components; ++k) pred[k] = predictMidpoint(read(a, k), read(b, k));
-  };
   // The prediction of point p of a level (not a root corner) at volume index vi, whose split edge's
   // endpoints lie at vi +- off where they are inside the volume: between them where both are (the
   // far one is p + h on every odd axis), else from the shell.
@@ -133,16 +161,14 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
                        std::int32_t* pred) {
     bool edgeInside = true;
     for (int a = 0; a < 3; ++a) edgeInside = edgeInside && (!((odd >> a) & 1u) || p[a] + (1 << scaleLog2) < dims[a]);
-    if (edgeInside) {
-      betweenInside(vi, off, pred);
-    } else {
-      const LebValues v = onShell(p, level, scaleLog2, odd);
-      std::copy_n(v.begin(), Components, pred);
-    }
+    if (edgeInside)
+      channels.between(vi, off, pred);
+    else
+      channels.onShell(p, level, scaleLog2, odd, pred);
   };
   auto atPoint = [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned odd) {
     const std::size_t vi = volumeIndex(p, dims);
-    std::int32_t pred[3] = {0, 0, 0};
+    std::int32_t pred[Components] = {};
     if (level >= 0) {
       std::ptrdiff_t off = 0;
       for (int a = 0; a < 3; ++a)
@@ -192,7 +218,7 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
       if (within) [[likely]] {
         for (int q = g.first; q < g.last; ++q, ++n) {
           vi[n] = static_cast<std::size_t>(baseIndex + pointOffset[q]);
-          betweenInside(vi[n], edgeOffset[q], pred + Components * n);
+          channels.between(vi[n], edgeOffset[q], pred + Components * n);
         }
       } else {
         for (int q = g.first; q < g.last; ++q, ++n) {
@@ -217,18 +243,19 @@ void walkChannel(const HzOrder& order, const Dims3& dims, const LebPadding& padd
   }
 }
 
-// walkChannel a value at a time: valueOf(h, vi, component, prediction), in index order.
+// walkPoints of one channel a value at a time: valueOf(h, vi, component, prediction), in index order.
 template <class ValueOf>
 void walkInside(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
                 std::uint64_t begin, std::uint64_t end, ValueOf&& valueOf) {
   inside.visit([&](const auto* values) {
-    constexpr int Components = componentsOf<std::remove_cv_t<std::remove_pointer_t<decltype(values)>>>();
-    walkChannel(order, dims, padding, inside, values, begin, end,
-                [&](std::uint64_t h, const std::size_t* vi, const std::int32_t* pred, int n) {
-                  for (int q = 0; q < n; ++q)
-                    for (int k = 0; k < Components; ++k)
-                      valueOf(h + static_cast<std::uint64_t>(q), vi[q], k, pred[Components * q + k]);
-                });
+    using T = std::remove_cv_t<std::remove_pointer_t<decltype(values)>>;
+    constexpr int Components = componentsOf<T>();
+    walkPoints(order, dims, ChannelValues<T>{values, padding, inside}, begin, end,
+               [&](std::uint64_t h, const std::size_t* vi, const std::int32_t* pred, int n) {
+                 for (int q = 0; q < n; ++q)
+                   for (int k = 0; k < Components; ++k)
+                     valueOf(h + static_cast<std::uint64_t>(q), vi[q], k, pred[Components * q + k]);
+               });
   });
 }
 
@@ -260,34 +287,49 @@ T storedValue(std::int32_t sum, std::uint32_t mask) {
     return static_cast<T>(static_cast<std::uint32_t>(sum) & mask);
 }
 
-// Writes the values of a segment whose deltas `d` holds (decoded whole): each point's prediction
-// plus its delta, as the output type takes the sum (storedValue), in the walk's order.
-void reconstructSegment(const HzOrder& order, const Dims3& dims, const LebPadding& padding, const InsideValues& inside,
-                        const LebVolumeOut& out, LebChannelKind kind, int valueBits, const SegmentDeltas& d) {
-  const auto mask = static_cast<std::uint32_t>((std::uint64_t{1} << valueBits) - 1);
-  withChannel(out, kind, [&](auto* target) {
-    using T = std::remove_pointer_t<decltype(target)>;
-    constexpr std::size_t kComponents = componentsOf<T>();
-    const std::span<const std::int32_t> all = d.deltas();
-    std::size_t taken = 0;
-    walkChannel(order, dims, padding, inside, static_cast<const T*>(target), d.begin, d.end,
-                [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
-                  const std::size_t values = kComponents * static_cast<std::size_t>(n);
-                  if (values > all.size() - taken)
-                    throw std::logic_error("LEB decode: the walk met more points than countInside");
-                  const std::int32_t* delta = all.data() + taken;
-                  taken += values;
-                  // A point's components are summed before any is stored: a store through the
-                  // output (a character type) may alias the predictions and deltas, which would
-                  // otherwise be loaded again after each store.
-                  for (int q = 0; q < n; ++q, pred += kComponents, delta += kComponents) {
-                    std::array<T, kComponents> sum;
-                    for (std::size_t c = 0; c < kComponents; ++c) sum[c] = storedValue<T>(pred[c] + delta[c], mask);
-                    std::copy_n(sum.data(), kComponents, target + kComponents * vi[q]);
-                  }
-                });
+// One channel's part in the reconstruction of a segment: its output, the segment's deltas
+// (decoded whole) and how many of them the walk has taken.
+template <class T>
+struct ChannelStore {
+  static constexpr int kComponents = componentsOf<T>();
+  T* target;
+  std::uint32_t mask;  // of the channel's b-bit values (storedValue)
+  std::span<const std::int32_t> all;
+  std::size_t taken = 0;
+  // The deltas of the walk's next n points.
+  const std::int32_t* take(int n) {
+    const std::size_t values = kComponents * static_cast<std::size_t>(n);
+    if (values > all.size() - taken) throw std::logic_error("LEB decode: the walk met more points than countInside");
+    taken += values;
+    return all.data() + (taken - values);
+  }
+  // The point at volume index vi: its prediction plus its delta, as the output type takes the sum.
+  // The components are summed before any is stored: a store through the output (a character type)
+  // may alias the predictions and deltas, which would otherwise be loaded again after each store.
+  void store(std::size_t vi, const std::int32_t* pred, const std::int32_t* delta) const {
+    std::array<T, kComponents> sum;
+    for (std::size_t c = 0; c < sum.size(); ++c) sum[c] = storedValue<T>(pred[c] + delta[c], mask);
+    std::copy_n(sum.data(), kComponents, target + kComponents * vi);
+  }
+  void finish() const {
     if (taken != all.size()) throw std::logic_error("LEB decode: the walk met fewer points than countInside");
-  });
+  }
+};
+
+// Writes the values of the segment [begin, end) of each channel that `stores` holds (in the order
+// of `channels`' predictions): each point's prediction plus its delta, in the walk's order.
+template <class Channels, class... Stores>
+void reconstructSegment(const HzOrder& order, const Dims3& dims, const Channels& channels, std::uint64_t begin,
+                        std::uint64_t end, Stores&... stores) {
+  walkPoints(
+      order, dims, channels, begin, end, [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
+        const std::int32_t* delta[] = {stores.take(n)...};
+        for (int q = 0; q < n; ++q, pred += Channels::kValues) {
+          int at = 0, j = 0;
+          ((stores.store(vi[q], pred + at, delta[j] + Stores::kComponents * q), at += Stores::kComponents, ++j), ...);
+        }
+      });
+  (stores.finish(), ...);
 }
 
 // The deltas of a run of pages, per stored page (the pages that hold a point of the volume).
@@ -534,7 +576,8 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
   const std::uint64_t samples = sampleCount(s.dims);
   const std::uint64_t bytes = (s.hasGradients() ? 5 : 2) * samples;
-  return bytes + LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint;  // one channel's shell at a time
+  // The shells of the stream's channels, held together (the data and gradients are decoded in one walk).
+  return bytes + LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint * s.channels.size();
 }
 
 namespace {
@@ -559,6 +602,172 @@ void deriveGradients(const LebVolumeOut& out, int threads, const LebWindow& wind
     quantizedGradientsInto(out.data16, out.dims, out.gradients, threads, afterBatch);
 }
 
+// One channel of a whole-volume decode: the inputs of its predictions (the output itself, where
+// the coarser levels are already written, and the shell of the padding) and its open pages.
+struct ChannelDecode {
+  const LebChannel& channel;
+  ChannelSpec spec;
+  InsideValues inside;
+  LebPadding padding;
+  std::map<std::uint64_t, std::optional<LebPageReader>> open;
+  ChannelDecode(const LebStream& s, const LebChannel& c, const LebVolumeOut& out)
+      : channel(c),
+        spec(specOf(c)),
+        inside(insideOf(LebVolumeIn{out.dims, out.sampleBits, out.data8, out.data16, out.gradients}, c.kind)),
+        padding(s.grid, s.dims, spec.components) {}
+  std::uint32_t mask() const { return static_cast<std::uint32_t>((std::uint64_t{1} << spec.valueBits) - 1); }
+};
+
+// Calls f(values, stores...) with what the walk of a segment of `group`'s channels reads
+// (ChannelValues of the one channel, or SampleAndGradientValues of the two) and one ChannelStore
+// per channel, over the segment's deltas d[j] of channel j.
+template <class F>
+void withSegment(const LebVolumeOut& out, const std::vector<ChannelDecode*>& group, const SegmentDeltas* d, F&& f) {
+  if (group.size() == 1) {
+    const ChannelDecode& c = *group[0];
+    withChannel(out, c.spec.kind, [&](auto* target) {
+      using T = std::remove_pointer_t<decltype(target)>;
+      ChannelStore<T> store{target, c.mask(), d[0].deltas()};
+      f(ChannelValues<T>{target, c.padding, c.inside}, store);
+    });
+    return;
+  }
+  const ChannelDecode &data = *group[0], &gradients = *group[1];
+  auto withData = [&](auto* samples) {
+    using D = std::remove_pointer_t<decltype(samples)>;
+    ChannelStore<D> dataStore{samples, data.mask(), d[0].deltas()};
+    ChannelStore<std::int8_t> gradientStore{out.gradients, gradients.mask(), d[1].deltas()};
+    f(SampleAndGradientValues<D>{{samples, data.padding, data.inside},
+                                 {out.gradients, gradients.padding, gradients.inside}},
+      dataStore, gradientStore);
+  };
+  if (out.data8)
+    withData(out.data8);
+  else
+    withData(out.data16);
+}
+
+// Decodes the channels of `group`: one channel, or a stream's data and gradients (channels 0 and
+// 1, whose stored pages are the same) in one walk that predicts a point's sample and gradient
+// together. `part` is the group's share of the work (the window's fractions).
+//
+// Level by level: the points of one level depend only on coarser ones, so the level's part of
+// each stored page is reconstructed in parallel; a page's reader carries on where the previous
+// level left it, and is finished (its end checked) once the walk has left the page. Between
+// stored pages, the walk checks that no point of the volume lies in a page the stream lacks. A
+// page is opened (its CRC checked) by the worker of its first segment, in parallel: a page has
+// one segment a level, and the maps change only between the levels.
+void decodeChannels(const LebStream& s, const HzOrder& order, const LebVolumeOut& out,
+                    const std::vector<ChannelDecode*>& group, int threads, const LebWindow& window, WorkSpan part) {
+  const int pb = s.pageBits;
+  const LebChannel& first = group[0]->channel;
+  const std::size_t channels = group.size();
+  for (int level = -1; level < s.grid.levelCount(); ++level) {
+    for (ChannelDecode* c : group) c->padding.addLevel(level, c->inside);
+    const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
+    if (begin == end) continue;
+    // Segments of the level: a stored page's part of it, or a run of pages the stream lacks.
+    struct Segment {
+      std::uint64_t begin, end;
+      bool stored;
+      std::uint64_t page;
+    };
+    std::vector<Segment> segments;
+    auto stored = std::lower_bound(first.storedPage.begin(), first.storedPage.end(), begin >> pb);
+    for (std::uint64_t at = begin; at < end;) {
+      if (stored != first.storedPage.end() && (std::uint64_t{*stored} << pb) < end) {
+        const std::uint64_t page = *stored, pageBegin = std::max(begin, page << pb);
+        if (at < pageBegin) segments.push_back({at, pageBegin, false, 0});
+        at = std::min(end, (page + 1) << pb);
+        segments.push_back({pageBegin, at, true, page});
+        for (ChannelDecode* c : group) c->open[page];  // the map changes here only
+        ++stored;
+      } else {
+        segments.push_back({at, end, false, 0});
+        at = end;
+      }
+    }
+    // The level's pages are independent of each other, so they are taken in slab order (tiles of
+    // kSlabSide voxels in z, then y, then x, by the segment's first point) rather than in the
+    // stream's hierarchical order, which comes back to an output row only after a whole octant:
+    // under a resident window smaller than the outputs, that dropped rows still being written
+    // and faulted them in again for every page (docs/leb.md, "Streaming between files"). The
+    // bytes written are the same in any order.
+    std::vector<std::array<std::uint64_t, 2>> keys(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+      const GridPoint p = order.point(segments[i].begin);
+      keys[i] = {slabKey(p), i};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<Segment> sorted(segments.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = segments[static_cast<std::size_t>(keys[i][1])];
+    segments.swap(sorted);
+    // In batches of kPagesPerRun segments per worker item, the window between batches. (Items of
+    // 4 segments cut the 1024^3 bench's decode peak by 4 %, 1.73 to 1.66 GB, for 1.7 times the
+    // time: batch overhead and refaults after trims.)
+    const int perBatch = static_cast<int>(kPagesPerRun);
+    // The group's indices up to this level's, and the level's share of them.
+    const double grid = static_cast<double>(order.size());
+    const WorkSpan levelPart{part.base + part.span * static_cast<double>(begin) / grid,
+                             part.span * static_cast<double>(end - begin) / grid};
+    inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, levelPart,
+              [&](int firstItem, int lastItem) {
+                const int from = firstItem * perBatch,
+                          to = std::min(static_cast<int>(segments.size()), lastItem * perBatch);
+                // Two segments an item: their pages' deltas of each channel are decoded together
+                // (readBoth). In chunks (parallelForChunked): the segments are in slab order, so a
+                // worker's chunk is a block of the volume, about the same at every level, whose
+                // parents it wrote itself (the engine's whole decode on 2 threads, median 218 to
+                // 247 MB/s: docs/leb.md, "Kept").
+                parallelForChunked((to - from + 1) / 2, threads, [&](int item) {
+                  const int at = from + 2 * item, itemEnd = std::min(to, at + 2);
+                  SegmentDeltas work[2][2];  // [segment][channel]
+                  int n = 0;
+                  for (int k = at; k < itemEnd; ++k) {
+                    const Segment& seg = segments[static_cast<std::size_t>(k)];
+                    if (!seg.stored) {  // pages the stream lacks: no point of the volume may lie in them
+                      const ChannelDecode& c = *group[0];
+                      walkInside(order, s.dims, c.padding, c.inside, seg.begin, seg.end,
+                                 [&](std::uint64_t h, std::size_t, int, std::int32_t) {
+                                   throw pageNotStored(c.channel, h >> pb);
+                                 });
+                      continue;
+                    }
+                    // The segment's points inside the volume, one value a component each.
+                    const std::uint64_t points = order.countInside(s.dims, seg.begin, seg.end);
+                    for (std::size_t j = 0; j < channels; ++j) {
+                      ChannelDecode& c = *group[j];
+                      std::optional<LebPageReader>& reader = c.open.find(seg.page)->second;
+                      if (!reader) reader.emplace(openPage(s, c.channel, seg.page));
+                      work[n][j].allocate(*reader, seg.begin, seg.end,
+                                          points * static_cast<std::uint64_t>(c.spec.components));
+                    }
+                    ++n;
+                  }
+                  for (std::size_t j = 0; j < channels; ++j) {
+                    if (n == 2)
+                      LebPageReader::readBoth(*work[0][j].reader, work[0][j].deltas(), *work[1][j].reader,
+                                              work[1][j].deltas());
+                    else if (n == 1)
+                      work[0][j].reader->read(work[0][j].deltas());
+                  }
+                  for (int k = 0; k < n; ++k)
+                    withSegment(out, group, work[k], [&](const auto& values, auto&... stores) {
+                      reconstructSegment(order, s.dims, values, work[k][0].begin, work[k][0].end, stores...);
+                    });
+                });
+              });
+    for (ChannelDecode* c : group)
+      for (auto it = c->open.begin(); it != c->open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
+        finishPage(*it->second, it->second->valuesRead() / static_cast<std::size_t>(c->spec.components), c->channel,
+                   it->first);
+        it = c->open.erase(it);
+      }
+  }
+  for (const ChannelDecode* c : group)
+    if (!c->open.empty()) throw std::logic_error("LEB decode: a page outlived the grid");
+}
+
 }  // namespace
 
 void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, const LebWindow& window) {
@@ -571,115 +780,27 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     throw std::invalid_argument("decodeLebInto: the output does not match the stream's " + dimsText(s.dims) + " uint" +
                                 std::to_string(s.sampleBits) + (hasGradients ? " with gradients" : ""));
   const HzOrder order(s.grid);
-  const int pb = s.pageBits;
   // The work in units of one component's reconstruction: the data's one, a gradients channel's
   // three, the derivation of the gradients one (it reads the samples once, and is cheaper than a
   // component's walk).
   const double workUnits = static_cast<double>(s.channels.size() > 1 ? 4 : 1) + (derive ? 1.0 : 0.0);
-  double channelsDone = 0.0;
-  for (const LebChannel& ch : s.channels) {
-    const ChannelSpec spec = specOf(ch);
-    const InsideValues inside =
-        insideOf(LebVolumeIn{out.dims, out.sampleBits, out.data8, out.data16, out.gradients}, ch.kind);
-    LebPadding padding(s.grid, s.dims, spec.components);
-    // Level by level: the points of one level depend only on coarser ones, so the level's part of
-    // each stored page is reconstructed in parallel; a page's reader carries on where the previous
-    // level left it, and is finished (its end checked) once the walk has left the page. Between
-    // stored pages, the walk checks that no point of the volume lies in a page the stream lacks.
-    // A page is opened (its CRC checked) by the worker of its first segment, in parallel: a page
-    // has one segment a level, and the map changes only between the levels.
-    std::map<std::uint64_t, std::optional<LebPageReader>> open;
-    for (int level = -1; level < s.grid.levelCount(); ++level) {
-      padding.addLevel(level, inside);
-      const std::uint64_t begin = order.levelBegin(level), end = order.levelBegin(level + 1);
-      if (begin == end) continue;
-      // Segments of the level: a stored page's part of it, or a run of pages the stream lacks.
-      struct Segment {
-        std::uint64_t begin, end;
-        std::optional<LebPageReader>* reader;  // null for pages the stream lacks
-        std::uint64_t page;
-      };
-      std::vector<Segment> segments;
-      auto stored = std::lower_bound(ch.storedPage.begin(), ch.storedPage.end(), begin >> pb);
-      for (std::uint64_t at = begin; at < end;) {
-        if (stored != ch.storedPage.end() && (std::uint64_t{*stored} << pb) < end) {
-          const std::uint64_t page = *stored, pageBegin = std::max(begin, page << pb);
-          if (at < pageBegin) segments.push_back({at, pageBegin, nullptr, 0});
-          at = std::min(end, (page + 1) << pb);
-          segments.push_back({pageBegin, at, &open[page], page});
-          ++stored;
-        } else {
-          segments.push_back({at, end, nullptr, 0});
-          at = end;
-        }
-      }
-      // The level's pages are independent of each other, so they are taken in slab order (tiles of
-      // kSlabSide voxels in z, then y, then x, by the segment's first point) rather than in the
-      // stream's hierarchical order, which comes back to an output row only after a whole octant:
-      // under a resident window smaller than the outputs, that dropped rows still being written
-      // and faulted them in again for every page (docs/leb.md, "Streaming between files"). The
-      // bytes written are the same in any order.
-      std::vector<std::array<std::uint64_t, 2>> keys(segments.size());
-      for (std::size_t i = 0; i < segments.size(); ++i) {
-        const GridPoint p = order.point(segments[i].begin);
-        keys[i] = {slabKey(p), i};
-      }
-      std::sort(keys.begin(), keys.end());
-      std::vector<Segment> sorted(segments.size());
-      for (std::size_t i = 0; i < keys.size(); ++i) sorted[i] = segments[static_cast<std::size_t>(keys[i][1])];
-      segments.swap(sorted);
-      // In batches of kPagesPerRun segments per worker item, the window between batches. (Items of
-      // 4 segments cut the 1024^3 bench's decode peak by 4 %, 1.73 to 1.66 GB, for 1.7 times the
-      // time: batch overhead and refaults after trims.)
-      const int perBatch = static_cast<int>(kPagesPerRun);
-      // The work so far: the channels before (in proportion to their components), then this
-      // channel's indices up to this level's, and the level's share of them.
-      const double total = workUnits, grid = static_cast<double>(order.size());
-      const WorkSpan part{(channelsDone + spec.components * static_cast<double>(begin) / grid) / total,
-                          spec.components * static_cast<double>(end - begin) / grid / total};
-      inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, part,
-                [&](int first, int last) {
-                  const int from = first * perBatch, to = std::min(static_cast<int>(segments.size()), last * perBatch);
-                  // Two segments an item: their pages' deltas are decoded together (readBoth). In
-                  // chunks (parallelForChunked): the segments are in slab order, so a worker's chunk
-                  // is a block of the volume, about the same at every level, whose parents it wrote
-                  // itself (the engine's whole decode on 2 threads, median 218 to 247 MB/s:
-                  // docs/leb.md, "Kept").
-                  parallelForChunked((to - from + 1) / 2, threads, [&](int item) {
-                    const int at = from + 2 * item, itemEnd = std::min(to, at + 2);
-                    SegmentDeltas work[2];
-                    int n = 0;
-                    for (int k = at; k < itemEnd; ++k) {
-                      const Segment& seg = segments[static_cast<std::size_t>(k)];
-                      if (!seg.reader) {  // pages the stream lacks: no point of the volume may lie in them
-                        walkInside(
-                            order, s.dims, padding, inside, seg.begin, seg.end,
-                            [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(ch, h >> pb); });
-                        continue;
-                      }
-                      if (!*seg.reader) seg.reader->emplace(openPage(s, ch, seg.page));
-                      // The segment's points inside the volume, one value a component each.
-                      work[n++].allocate(
-                          **seg.reader, seg.begin, seg.end,
-                          order.countInside(s.dims, seg.begin, seg.end) * static_cast<std::uint64_t>(spec.components));
-                    }
-                    if (n == 2)
-                      LebPageReader::readBoth(*work[0].reader, work[0].deltas(), *work[1].reader, work[1].deltas());
-                    else if (n == 1)
-                      work[0].reader->read(work[0].deltas());
-                    for (int k = 0; k < n; ++k)
-                      reconstructSegment(order, s.dims, padding, inside, out, ch.kind, spec.valueBits, work[k]);
-                  });
-                });
-      for (auto it = open.begin(); it != open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
-        finishPage(*it->second, it->second->valuesRead() / static_cast<std::size_t>(spec.components), ch, it->first);
-        it = open.erase(it);
-      }
-    }
-    if (!open.empty()) throw std::logic_error("LEB decode: a page outlived the grid");
-    channelsDone += spec.components;
+  std::deque<ChannelDecode> decoders;
+  for (const LebChannel& ch : s.channels) decoders.emplace_back(s, ch, out);
+  // A stream's data and gradients go in one walk when they store the same pages (as every encoder
+  // writes them), else one channel after the other; the same bytes either way.
+  std::vector<std::vector<ChannelDecode*>> groups;
+  if (decoders.size() == 2 && s.channels[0].storedPage == s.channels[1].storedPage)
+    groups.push_back({&decoders[0], &decoders[1]});
+  else
+    for (ChannelDecode& d : decoders) groups.push_back({&d});
+  double done = 0.0;
+  for (const auto& group : groups) {
+    double components = 0.0;
+    for (const ChannelDecode* c : group) components += c->spec.components;
+    decodeChannels(s, order, out, group, threads, window, {done / workUnits, components / workUnits});
+    done += components;
   }
-  if (derive) deriveGradients(out, threads, window, {channelsDone / workUnits, 1.0 - channelsDone / workUnits});
+  if (derive) deriveGradients(out, threads, window, {done / workUnits, 1.0 - done / workUnits});
 }
 
 LebDecoded decodeLeb(const LebStream& s, int threads) {

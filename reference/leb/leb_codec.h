@@ -106,8 +106,9 @@ struct LebDecoded {
 // derives its gradients has them computed from the decoded samples (quantizedGradients), in
 // parallel by slices. Throws StreamError naming the page and offset of the first corrupt page.
 // Memory: at most lebDecodeMemoryBytes(stream), plus one small reader per open page: the volume
-// (2 bytes per sample) and its gradients (3 bytes per sample), plus the shell of padding that
-// predictions reach, one channel at a time (leb_padding.h; none for a volume that fills its grid).
+// (2 bytes per sample) and its gradients (3 bytes per sample), plus the shells of padding that
+// predictions reach, one a channel, held together (leb_padding.h; none for a volume that fills its
+// grid): a stream's data and gradients are reconstructed in one walk.
 // Nothing is proportional to the grid: a 513x1x1 stream decodes in a few kilobytes. A caller that
 // decodes untrusted streams compares lebDecodeMemoryBytes with what it may allocate first (voxref
 // decode does). parseLebStream has already refused streams too short for their volume.

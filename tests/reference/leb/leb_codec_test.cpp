@@ -429,12 +429,13 @@ TEST_F(LebCorrupt, ThePageTableListsExactlyThePagesOfTheVolume) {
 }
 
 // The contract of leb_codec.h: what decodeLeb allocates is known from the header, and follows the
-// volume, not the grid: the samples (2 bytes), the gradients (3) and the shell of padding that
-// predictions reach (leb_padding.h), whose size leb_padding_test.cpp derives by brute force.
+// volume, not the grid: the samples (2 bytes), the gradients (3) and the shells of padding that
+// predictions reach (leb_padding.h), one a channel, whose size leb_padding_test.cpp derives by
+// brute force.
 TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheVolume) {
   const LebStream thin = parseLebStream(encodeLeb(noise({65, 1, 1}, 8, 3), 8));
   const std::uint64_t shell = LebPadding::shellPoints(thin.grid, thin.dims);
-  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + shell * LebPadding::kBytesPerPoint);
+  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + 2 * shell * LebPadding::kBytesPerPoint);
   EXPECT_LT(shell, 65u * 8);  // of the 65^3 grid's 274560 padding points
   LebEncodeOptions o;
   o.gradients = false;
