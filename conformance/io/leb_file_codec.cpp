@@ -14,7 +14,6 @@
 #include "conformance/io/mapped_file.h"
 #include "reference/common/byte_stream.h"
 #include "reference/leb/gradients.h"
-#include "reference/leb/leb_padding.h"
 
 namespace voxref::io {
 namespace {
@@ -178,8 +177,7 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
   const std::uint64_t samples = ref::sampleCount(s.dims);
   return s.bytes.size() + samples * static_cast<std::uint64_t>(s.sampleBits / 8) +
-         (s.hasGradients() ? 3 * samples : 0) +
-         ref::LebPadding::shellPoints(s.grid, s.dims) * ref::LebPadding::kBytesPerPoint * s.channels.size();
+         (s.hasGradients() ? 3 * samples : 0) + ref::lebDecodeShellBytes(s);
 }
 
 LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,

@@ -575,9 +575,12 @@ std::uint64_t lebEncodeMemoryBytes(const Dims3& dims, const LebEncodeOptions& o)
 
 std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
   const std::uint64_t samples = sampleCount(s.dims);
-  const std::uint64_t bytes = (s.hasGradients() ? 5 : 2) * samples;
-  // The shells of the stream's channels, held together (the data and gradients are decoded in one walk).
-  return bytes + LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint * s.channels.size();
+  return (s.hasGradients() ? 5 : 2) * samples + lebDecodeShellBytes(s);
+}
+
+std::uint64_t lebDecodeShellBytes(const LebStream& s) {
+  // One a channel, held together (the data and gradients are decoded in one walk).
+  return LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint * s.channels.size();
 }
 
 namespace {

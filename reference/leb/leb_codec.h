@@ -115,6 +115,8 @@ struct LebDecoded {
 LebDecoded decodeLeb(const LebStream& stream, int threads = 0);
 // The bound above, from the header alone (nothing is allocated).
 std::uint64_t lebDecodeMemoryBytes(const LebStream& stream);
+// Its part that the shells of padding take (decodeLebInto holds them whatever its outputs are).
+std::uint64_t lebDecodeShellBytes(const LebStream& stream);
 // Decodes into `out` (decodeLeb is this with a volume of its own): out.dims and sampleBits must be
 // the stream's, data8 set for 8-bit samples and data16 for 16, gradients set exactly when the
 // stream has a gradients channel, or when it derives them and they are wanted
