@@ -2,6 +2,7 @@
 #include "conformance/framework/selection.h"
 
 #include <algorithm>
+#include <array>
 #include <barrier>
 #include <chrono>
 #include <memory>
@@ -348,75 +349,69 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
                     formatNumber("%.2f", out / p1.median / zstdRate), formatNumber("%.2f", out / p2.median / zstdRate),
                     ""});
   const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
-  const Timing w1 = measure([&] { (void)ref::decodeLeb(*e.stream, 1); });
-  const Timing w2 = measure([&] { (void)ref::decodeLeb(*e.stream, 2); });
-  t.rows.push_back({"whole volume (decompress and reconstruct), MB/s of data and gradients",
-                    mbps(volumeBytes, w1.median), mbps(volumeBytes, w2.median), ""});
+  // The whole decode of a stream on one and two threads: a row of MB/s and a row against the goal.
+  auto wholeRows = [&](const ref::LebStream& stream, const std::string& what, const std::string& goalWhat) {
+    const std::array<Timing, 2> w = {measure([&] { (void)ref::decodeLeb(stream, 1); }),
+                                     measure([&] { (void)ref::decodeLeb(stream, 2); })};
+    t.rows.push_back({what, mbps(volumeBytes, w[0].median), mbps(volumeBytes, w[1].median), ""});
+    t.rows.push_back({goalWhat, formatNumber("%.2f", volumeBytes / 1e6 / w[0].median / kWholeDecodeGoalMBps),
+                      formatNumber("%.2f", volumeBytes / 1e6 / w[1].median / kWholeDecodeGoalMBps), ""});
+    return w;
+  };
   // The whole decode decompresses every page and then reconstructs: page decompression alone (the
   // first row, the same bytes for 8-bit data) bounds it from above.
-  t.rows.push_back({"whole volume / goal of 330 MB/s (it cannot exceed page decompression alone, row 1)",
-                    formatNumber("%.2f", volumeBytes / 1e6 / w1.median / kWholeDecodeGoalMBps),
-                    formatNumber("%.2f", volumeBytes / 1e6 / w2.median / kWholeDecodeGoalMBps), ""});
+  const std::array<Timing, 2> w =
+      wholeRows(*e.stream, "whole volume (decompress and reconstruct), MB/s of data and gradients",
+                "whole volume / goal of 330 MB/s (it cannot exceed page decompression alone, row 1)");
   // The same volume in a stream that derives its gradients (voxref encode --derive-gradients): the
   // data channel alone, the gradients computed from the decoded samples; checked in the run.
   const Encoded derived = encodeAndCheck(*d, 12, o.threads, true);
-  const Timing v1 = measure([&] { (void)ref::decodeLeb(*derived.stream, 1); });
-  const Timing v2 = measure([&] { (void)ref::decodeLeb(*derived.stream, 2); });
-  t.rows.push_back({"whole volume, gradients derived from the data (a stream of " +
-                        std::to_string(derived.stream->bytes.size()) + " bytes, against " +
-                        std::to_string(e.stream->bytes.size()) + " storing them), MB/s of data and gradients",
-                    mbps(volumeBytes, v1.median), mbps(volumeBytes, v2.median), ""});
-  t.rows.push_back({"whole volume, gradients derived / goal of 330 MB/s",
-                    formatNumber("%.2f", volumeBytes / 1e6 / v1.median / kWholeDecodeGoalMBps),
-                    formatNumber("%.2f", volumeBytes / 1e6 / v2.median / kWholeDecodeGoalMBps), ""});
+  const std::array<Timing, 2> v = wholeRows(
+      *derived.stream,
+      "whole volume, gradients derived from the data (a stream of " + std::to_string(derived.stream->bytes.size()) +
+          " bytes, against " + std::to_string(e.stream->bytes.size()) + " storing them), MB/s of data and gradients",
+      "whole volume, gradients derived / goal of 330 MB/s");
   t.data["whole_derived"] = {{"output_bytes", volumeBytes},
                              {"stream_bytes", derived.stream->bytes.size()},
                              {"stored_stream_bytes", e.stream->bytes.size()},
-                             {"one_thread", toJson(v1)},
-                             {"two_threads", toJson(v2)}};
+                             {"one_thread", toJson(v[0])},
+                             {"two_threads", toJson(v[1])}};
   const int points = o.quick ? 5000 : 1000000;
+  // Random access to a stream on one and two threads: its row (`goal`: with the ratio to 3.3 M
+  // points/s) and its record.
+  auto accessRow = [&](const std::shared_ptr<const ref::LebStream>& stream, AccessPattern pattern, std::size_t budget,
+                       const std::string& what, bool goal, const std::string& anchor) {
+    const RandomAccess r1 = randomAccess(stream, 1, budget, points, pattern),
+                       r2 = randomAccess(stream, 2, budget, points, pattern);
+    t.rows.push_back({what,
+                      formatNumber("%.0f", r1.pointsPerSecond) +
+                          formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
+                      formatNumber("%.0f", r2.pointsPerSecond) +
+                          (goal ? formatNumber(" (%.2f of the goal, 3.3 M)", r2.pointsPerSecond / 3.3e6) : ""),
+                      anchor});
+    return nlohmann::json{{"pattern", pattern == AccessPattern::Bricks ? "bricks" : "uniform"},
+                          {"budget_bytes", budget},
+                          {"points_per_second_1", r1.pointsPerSecond},
+                          {"points_per_second_2", r2.pointsPerSecond},
+                          {"page_decodes_per_point", r1.pageMissesPerPoint}};
+  };
   for (const AccessPattern pattern : {AccessPattern::Bricks, AccessPattern::Uniform})
     for (std::size_t budget : {std::size_t{64} << 20, std::size_t{1} << 20}) {
-      const RandomAccess r1 = randomAccess(e.stream, 1, budget, points, pattern),
-                         r2 = randomAccess(e.stream, 2, budget, points, pattern);
-      const bool bricks = pattern == AccessPattern::Bricks;
+      const bool bricks = pattern == AccessPattern::Bricks, goalRow = bricks && budget > (1u << 20);
       const std::string what = std::string(bricks ? "points of random 8^3 bricks" : "uniformly random points") +
                                " (sample and gradient), points/s, cache " + std::to_string(budget >> 20) + " MB";
-      const bool goalRow = bricks && budget > (1u << 20);
-      t.rows.push_back({what,
-                        formatNumber("%.0f", r1.pointsPerSecond) +
-                            formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
-                        formatNumber("%.0f", r2.pointsPerSecond) +
-                            (goalRow ? formatNumber(" (%.2f of the goal, 3.3 M)", r2.pointsPerSecond / 3.3e6) : ""),
-                        bricks && budget > (1u << 20) ? "362K-3.32M points/s (during extraction)" : ""});
-      t.data["random_access"].push_back({{"pattern", bricks ? "bricks" : "uniform"},
-                                         {"budget_bytes", budget},
-                                         {"points_per_second_1", r1.pointsPerSecond},
-                                         {"points_per_second_2", r2.pointsPerSecond},
-                                         {"page_decodes_per_point", r1.pageMissesPerPoint}});
+      t.data["random_access"].push_back(accessRow(e.stream, pattern, budget, what, goalRow,
+                                                  goalRow ? "362K-3.32M points/s (during extraction)" : ""));
     }
-  {
-    const std::size_t budget = std::size_t{64} << 20;
-    const RandomAccess r1 = randomAccess(derived.stream, 1, budget, points, AccessPattern::Bricks),
-                       r2 = randomAccess(derived.stream, 2, budget, points, AccessPattern::Bricks);
-    t.rows.push_back(
-        {"points of random 8^3 bricks, gradients derived (a point's gradient from its six neighbours' "
-         "samples), points/s, cache 64 MB",
-         formatNumber("%.0f", r1.pointsPerSecond) +
-             formatNumber(" (%.3f page decodes per point)", r1.pageMissesPerPoint),
-         formatNumber("%.0f", r2.pointsPerSecond) +
-             formatNumber(" (%.2f of the goal, 3.3 M)", r2.pointsPerSecond / 3.3e6),
-         ""});
-    t.data["random_access_derived"] = {{"pattern", "bricks"},
-                                       {"budget_bytes", budget},
-                                       {"points_per_second_1", r1.pointsPerSecond},
-                                       {"points_per_second_2", r2.pointsPerSecond},
-                                       {"page_decodes_per_point", r1.pageMissesPerPoint}};
-  }
+  t.data["random_access_derived"] =
+      accessRow(derived.stream, AccessPattern::Bricks, std::size_t{64} << 20,
+                "points of random 8^3 bricks, gradients derived (a point's gradient from its six neighbours' "
+                "samples), points/s, cache 64 MB",
+                true, "");
   t.data["pages"] = {{"output_bytes", out}, {"one_thread", toJson(p1)}, {"two_threads", toJson(p2)}};
   t.data["zstd19_decode"] = {
       {"output_bytes", zstdBytes}, {"data", toJson(zd.decompress)}, {"gradients", toJson(zg.decompress)}};
-  t.data["whole"] = {{"output_bytes", volumeBytes}, {"one_thread", toJson(w1)}, {"two_threads", toJson(w2)}};
+  t.data["whole"] = {{"output_bytes", volumeBytes}, {"one_thread", toJson(w[0])}, {"two_threads", toJson(w[1])}};
   t.notes =
       "Page decompression decodes every page of both channels with the lead-1 decoder (the deltas, 1 byte each for "
       "8-bit data and "
