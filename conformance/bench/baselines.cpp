@@ -3,6 +3,7 @@
 #include <lzma.h>
 #include <zstd.h>
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace voxref::conf {
@@ -43,6 +44,26 @@ BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset) {
                                     size, reinterpret_cast<std::uint8_t*>(back.data()), &outPos, back.size());
   });
   if (ret != LZMA_OK || outPos != raw.size() || back != raw) throw std::runtime_error("xz: the round trip lost data");
+  return r;
+}
+
+BaselineResult piecewiseBaseline(std::string_view raw, std::size_t pieceBytes,
+                                 const std::function<BaselineResult(std::string_view)>& coder) {
+  if (pieceBytes == 0 || raw.empty()) throw std::invalid_argument("piecewiseBaseline: no pieces");
+  BaselineResult r;
+  auto add = [](Timing& sum, const Timing& t) {
+    sum.runs = sum.runs == 0 ? t.runs : std::min(sum.runs, t.runs);
+    sum.median += t.median;
+    sum.min += t.min;
+    sum.max += t.max;
+  };
+  for (std::size_t at = 0; at < raw.size(); at += pieceBytes) {
+    const BaselineResult piece = coder(raw.substr(at, pieceBytes));
+    if (r.codec.empty()) r.codec = piece.codec + " on pieces of " + std::to_string(pieceBytes) + " bytes";
+    r.bytes += piece.bytes;
+    add(r.compress, piece.compress);
+    add(r.decompress, piece.decompress);
+  }
   return r;
 }
 

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -24,5 +25,11 @@ struct BaselineResult {
 BaselineResult zstdBaseline(std::string_view raw, int level);
 // xz (liblzma's .xz container, CRC64) at `preset` (0..9).
 BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset);
+// `coder` (one of the above at a level) applied to each piece of `pieceBytes` of `raw` (the last
+// one shorter) on its own, as a coder that keeps random access at that granularity would be used:
+// the pieces' bytes summed, each a whole frame or .xz stream with its container, and their times
+// summed (the medians of decompression). Named "<coder> on pieces of N bytes".
+BaselineResult piecewiseBaseline(std::string_view raw, std::size_t pieceBytes,
+                                 const std::function<BaselineResult(std::string_view)>& coder);
 
 }  // namespace voxref::conf

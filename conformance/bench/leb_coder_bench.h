@@ -4,8 +4,9 @@
 // (one thread) of each coder, in one run, and whether the adaptive coder beats xz -9 on the data
 // and zstd -19 on the gradients (the goal). Every coded page is decoded and compared with its
 // deltas in the run. The adaptive coder is measured on the deltas alone, with the stream's page
-// table counted (12 bytes a stored page, 24 a channel, the header with the data): it is not yet a
-// coder a stream can name.
+// table counted (12 bytes a stored page, 24 a channel, the header with the data), as a version 3
+// stream (`voxref encode --coder adaptive`) holds them. Anchor rows give the goal's coder the same
+// random access: the raw channel in pieces of 2^16 samples, each compressed on its own.
 #pragma once
 
 #include "conformance/bench/bench.h"
