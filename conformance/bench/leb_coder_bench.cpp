@@ -112,16 +112,19 @@ CoderFigure baseline(const BaselineResult& b) {
 // coders' pieces hold as many samples (anchor rows: random access at about the same granularity).
 constexpr int kPieceSampleBits = 16;
 
-// The channel's goal coder (xz -9 for the data, zstd -19 for the gradients) on pieces of 2^16
-// samples of the raw channel, each on its own.
+// The coder a channel's goal names (issue 18, goal 5): xz -9 for the data, zstd -19 for the
+// gradients.
+std::string goalCoderName(bool data) { return data ? "xz -9" : "zstd -19"; }
+BaselineResult goalCoder(std::string_view raw, bool data) { return data ? xzBaseline(raw, 9) : zstdBaseline(raw, 19); }
+
+// The channel's goal coder on pieces of 2^16 samples of the raw channel, each on its own.
 CoderFigure piecewise(const std::string& raw, bool data, int bytesPerSample) {
   const std::size_t pieceBytes = static_cast<std::size_t>(bytesPerSample) << kPieceSampleBits;
-  const BaselineResult b = piecewiseBaseline(
-      raw, pieceBytes, [&](std::string_view piece) { return data ? xzBaseline(piece, 9) : zstdBaseline(piece, 19); });
-  const std::string codec = data ? "xz -9" : "zstd -19";
-  return {codec + " on pieces of 2^" + std::to_string(kPieceSampleBits) + " samples (" + std::to_string(pieceBytes) +
-              " bytes), each on its own: random access as the adaptive 2^16 pages",
-          static_cast<double>(b.bytes), b.decompress, codec};
+  const BaselineResult b =
+      piecewiseBaseline(raw, pieceBytes, [&](std::string_view piece) { return goalCoder(piece, data); });
+  return {goalCoderName(data) + " on pieces of 2^" + std::to_string(kPieceSampleBits) + " samples (" +
+              std::to_string(pieceBytes) + " bytes), each on its own: random access as the adaptive 2^16 pages",
+          static_cast<double>(b.bytes), b.decompress, goalCoderName(data)};
 }
 
 // Order-0 entropy of the points' gradients taken as 3-byte symbols, in bytes: what a coder of
@@ -212,7 +215,7 @@ BenchTable lebCoderBench(const BenchOptions& o) {
         std::string verdict;
         if (i == 1 || i == 2) {
           const double against = goal.bytes / c.bytes;  // the coder's ratio over the goal's
-          verdict = formatNumber("%.2f", against) + " of " + (data ? "xz -9" : "zstd -19") +
+          verdict = formatNumber("%.2f", against) + " of " + goalCoderName(data) +
                     "'s ratio: " + (against > 1.0 ? "beats it" : "below it");
         } else if (i == 5) {  // an anchor, not the goal: the adaptive 2^16 pages against it
           verdict = "anchor: adaptive 2^16 at " + formatNumber("%.2f", c.bytes / f.coders[2].bytes) + " of its ratio";
@@ -251,12 +254,10 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "deltas, its models restart with every page (reference/leb/FORMAT.md, 'Adaptive pages'). zstd and xz compress "
       "the raw channel whole (zstd -19, xz -9; no random access); the anchor 'on pieces' gives the goal's coder the "
       "adaptive 2^16 coder's random access: the raw channel cut into pieces of 2^16 samples (four slices of the "
-      "hydrogen atom, one of the engine), each compressed on its own with its frame or .xz container, so that it says "
-      "how much of a coder's "
-      "lead is the price of random access. Decode MB/s: raw bytes per second of decoding every "
-      "page "
-      "(or the whole channel), one thread. The gradient anchor is the order-0 entropy of the gradient vectors: "
-      "coding each point's three components as one symbol, with no prediction, would reach it. The row anchor "
+      "hydrogen atom, one of the engine), each compressed on its own with its frame or .xz container, so that it "
+      "says how much of a coder's lead is the price of random access. Decode MB/s: raw bytes per second of decoding "
+      "every page (or the whole channel), one thread. The gradient anchor is the order-0 entropy of the gradient "
+      "vectors: coding each point's three components as one symbol, with no prediction, would reach it. The row anchor "
       "counts the x-rows that repeat an earlier row byte for byte (rows of one value repeated left out): zstd and xz "
       "copy such a row from any distance, while the split-edge prediction sees only the neighbours of a point, and "
       "a page coded on its own cannot refer to rows in other pages. Where it is high (the data of the "
