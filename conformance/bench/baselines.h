@@ -28,7 +28,8 @@ BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset);
 // `coder` (one of the above at a level) applied to each piece of `pieceBytes` of `raw` (the last
 // one shorter) on its own, as a coder that keeps random access at that granularity would be used:
 // the pieces' bytes summed, each a whole frame or .xz stream with its container, and their times
-// summed (the medians of decompression). Named "<coder> on pieces of N bytes".
+// summed (median, min and max each; runs the fewest of any piece). Named "<coder> on pieces of N
+// bytes".
 BaselineResult piecewiseBaseline(std::string_view raw, std::size_t pieceBytes,
                                  const std::function<BaselineResult(std::string_view)>& coder);
 

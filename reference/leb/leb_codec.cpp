@@ -35,16 +35,23 @@ ChannelSpec specOf(LebChannelKind kind, int sampleBits) {
 }
 ChannelSpec specOf(const LebChannel& c) { return {c.kind, c.components, c.valueBits, c.isSigned}; }
 
-// Calls f with the channel's values in a volume span (LebVolumeIn or LebVolumeOut): the samples
-// at 8 or 16 bits, or the gradients (3 int8 components a sample), in volume order.
+// Calls f with the samples of a volume span (LebVolumeIn or LebVolumeOut), at 8 or 16 bits.
+template <class Span, class F>
+void withSamples(const Span& v, F&& f) {
+  if (v.data8)
+    f(v.data8);
+  else
+    f(v.data16);
+}
+
+// Calls f with the channel's values in a volume span: the samples (withSamples), or the gradients
+// (3 int8 components a sample), in volume order.
 template <class Span, class F>
 void withChannel(const Span& v, LebChannelKind kind, F&& f) {
   if (kind == LebChannelKind::Gradients)
     f(v.gradients);
-  else if (v.data8)
-    f(v.data8);
   else
-    f(v.data16);
+    withSamples(v, f);
 }
 
 // The components of a channel stored as T: the gradients are its only signed type
@@ -599,10 +606,8 @@ std::uint64_t slabKey(const GridPoint& p) {
 void deriveGradients(const LebVolumeOut& out, int threads, const LebWindow& window, WorkSpan part) {
   std::function<void(double)> afterBatch;
   if (window) afterBatch = [&](double done) { window(part.base + part.span * done); };
-  if (out.data8)
-    quantizedGradientsInto(out.data8, out.dims, out.gradients, threads, afterBatch);
-  else
-    quantizedGradientsInto(out.data16, out.dims, out.gradients, threads, afterBatch);
+  withSamples(
+      out, [&](const auto* samples) { quantizedGradientsInto(samples, out.dims, out.gradients, threads, afterBatch); });
 }
 
 // One channel of a whole-volume decode: the inputs of its predictions (the output itself, where
@@ -644,10 +649,7 @@ void withSegment(const LebVolumeOut& out, const std::vector<ChannelDecode*>& gro
                                  {out.gradients, gradients.padding, gradients.inside}},
       dataStore, gradientStore);
   };
-  if (out.data8)
-    withData(out.data8);
-  else
-    withData(out.data16);
+  withSamples(out, withData);
 }
 
 // Decodes the channels of `group`: one channel, or a stream's data and gradients (channels 0 and
