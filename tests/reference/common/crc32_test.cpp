@@ -1,6 +1,7 @@
 #include "reference/common/crc32.h"
 
 #include <cstdint>
+#include <iostream>
 #include <random>
 #include <string>
 
@@ -40,6 +41,26 @@ TEST(Crc32, AgreesWithTheBitwiseDefinitionAtEveryLengthAndAlignment) {
       ASSERT_EQ(crc32(std::string_view(buffer).substr(offset, length)), crc32BitByBit(piece))
           << "offset " << offset << " length " << length;
     }
+}
+
+// Both ways of computing it (tables, and folding by carry-less multiplication where the CPU has
+// it) at every length from 0 to 700 bytes and every offset from a 16-byte boundary, each from the
+// start and continuing from a checksum: the folding's four lanes, its one lane and its tail.
+TEST(Crc32, TablesAndFoldingAgreeWithTheBitwiseDefinition) {
+  std::mt19937 rng(11);
+  std::string buffer(720, '\0');
+  for (char& ch : buffer) ch = static_cast<char>(rng());
+  for (std::size_t offset = 0; offset < 16; ++offset)
+    for (std::size_t length = 0; length + offset <= buffer.size() && length <= 700; ++length) {
+      const std::string_view piece = std::string_view(buffer).substr(offset, length);
+      const std::uint32_t expected = crc32BitByBit(std::string(piece));
+      ASSERT_EQ(crc32_detail::slicedUpdate(0, piece), expected) << "offset " << offset << " length " << length;
+      ASSERT_EQ(crc32_detail::foldedUpdate(0, piece), expected) << "offset " << offset << " length " << length;
+      const std::uint32_t head = crc32BitByBit(buffer.substr(0, offset));
+      ASSERT_EQ(crc32_detail::foldedUpdate(head, piece), crc32BitByBit(buffer.substr(0, offset + length)))
+          << "continuing at " << offset << " length " << length;
+    }
+  if (!crc32_detail::foldedAvailable()) std::cout << "note: this CPU has no carry-less multiply; only the tables ran\n";
 }
 
 TEST(Crc32, ContinuesOverPieces) {
