@@ -563,7 +563,7 @@ std::uint64_t lebEncodeToMemoryBytes(const Dims3& dims, const LebEncodeOptions& 
   const std::uint64_t samples = sampleCount(dims);
   const std::uint64_t pages = lebPageCount(grid, o.pageBits);
   const std::uint64_t stored = std::min(pages, samples);  // a stored page holds a point of the volume
-  const std::uint64_t shell = LebPadding::shellPoints(grid, dims) * LebPadding::kBytesPerPoint;
+  const std::uint64_t shell = LebPadding::tableBytes(grid, dims);
   // The runs' counters and stored-page counts; the page table (12 bytes a stored page and channel)
   // and the descriptor made from it.
   const std::uint64_t runs = runsOf(pages);
@@ -587,7 +587,7 @@ std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
 
 std::uint64_t lebDecodeShellBytes(const LebStream& s) {
   // One a channel, held together (the data and gradients are decoded in one walk).
-  return LebPadding::shellPoints(s.grid, s.dims) * LebPadding::kBytesPerPoint * s.channels.size();
+  return LebPadding::tableBytes(s.grid, s.dims) * s.channels.size();
 }
 
 namespace {

@@ -7,14 +7,52 @@
 namespace voxref::ref {
 
 LebPadding::LebPadding(const LebGrid& grid, const Dims3& dims, int components)
-    : grid_(grid), dims_(dims), components_(components) {
-  values_.reserve(static_cast<std::size_t>(shellPoints(grid, dims)));
+    : grid_(grid), dims_(dims), components_(components), blocks_(layout(grid, dims)) {
+  std::uint64_t entries = 0;
+  for (const Block& b : blocks_) entries += b.count;
+  entries_.resize(static_cast<std::size_t>(entries));
 }
 
-const LebValues& LebPadding::at(const GridPoint& q) const {
-  const LebValues* v = values_.find(grid_.linearIndex(q));
-  if (!v) throw std::logic_error("LEB padding point " + pointText(q) + " is outside the shell a prediction can reach");
-  return *v;
+std::vector<LebPadding::Block> LebPadding::layout(const LebGrid& grid, const Dims3& dims) {
+  if (dims[0] > grid.side() && dims[1] > grid.side() && dims[2] > grid.side()) return {};
+  std::vector<Block> blocks(8 * static_cast<std::size_t>(grid.k + 1));
+  std::uint64_t first = 0;
+  for (int s = 0; s <= grid.k; ++s) {
+    const int h = 1 << s;
+    for (unsigned m = 1; m < 8; ++m) {
+      Block b;
+      b.first = first;
+      b.count = 1;
+      for (int a = 0; a < 3; ++a) {
+        const int multiples = (dims[a] + h - 1) >> s;  // of h below X_a; the first past it is h times this
+        if ((m >> a) & 1u) {
+          // The only multiple of h in [X_a, X_a + h - 2], within the grid (the root corners, of scale
+          // 2^k, are in the shell wherever they lie outside the volume).
+          const int pinned = multiples << s;
+          if (pinned > grid.side() || (s < grid.k && pinned > dims[a] + h - 2)) b.count = 0;
+          b.pinned[static_cast<std::size_t>(a)] = pinned;
+        } else {
+          b.stride[static_cast<std::size_t>(a)] = b.count;
+          b.count *= static_cast<std::uint64_t>(multiples);
+        }
+      }
+      if (b.count == 0) b.stride = {0, 0, 0};
+      first += b.count;
+      blocks[8 * static_cast<std::size_t>(s) + m] = b;
+    }
+  }
+  return blocks;
+}
+
+std::uint64_t LebPadding::tableBytes(const LebGrid& grid, const Dims3& dims) {
+  const std::vector<Block> blocks = layout(grid, dims);
+  std::uint64_t entries = 0;
+  for (const Block& b : blocks) entries += b.count;
+  return entries * sizeof(Entry) + blocks.size() * sizeof(Block);
+}
+
+void LebPadding::outsideShell(const GridPoint& q) {
+  throw std::logic_error("LEB padding point " + pointText(q) + " is outside the shell a prediction can reach");
 }
 
 std::uint64_t LebPadding::shellPoints(const LebGrid& grid, const Dims3& dims) {

@@ -11,15 +11,26 @@
 // keeps the shell's values, level by level, and computes nothing else of the padding; a 1025x1x1
 // volume in its 1025^3 grid keeps a few thousand of the grid's 10^9 padding points.
 //
-// Memory: size() entries, at most shellPoints(grid, dims), each at most kBytesPerPoint.
+// The shell's layout: a padding point q of scale H lies beyond the volume on the axes of its
+// *outside set* (q_a >= X_a), and there q_a is the first multiple of H at or past X_a, the only one
+// up to X_a + H - 2 (a root corner: the grid's side). So the shell's points of one scale and one
+// outside set lie on one face, edge or corner of the volume's box, in a lattice of step H, and the
+// table keeps each such block dense, indexed by q_a / H on the other axes: a lookup computes its
+// entry's place, and points next to each other in the volume read entries next to each other.
+// The blocks also hold the lattice's points of coarser scale, never read: where a block's pinned
+// coordinates are multiples of 2H, a quarter of a face's entries (about 4/3 of an entry a shell
+// point in large volumes), and on an edge of one or two entries possibly all of them.
+//
+// Memory: tableBytes(grid, dims), allocated by the constructor, whatever the levels added.
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
-#include "reference/common/flat_u64_map.h"
 #include "reference/common/volume.h"
 #include "reference/leb/leb_grid.h"
 #include "reference/leb/prediction.h"
@@ -55,7 +66,7 @@ class LebPadding {
 
   // Adds the shell's points of `level` (-1, the root corners, first; then 0, 1, ... in order),
   // each its prediction. An endpoint inside the volume has the value inside(volumeIndex, k), one
-  // in the padding the value this map holds (a coarser level, already added).
+  // in the padding the value this table holds (a coarser level, already added).
   template <class Inside>
   void addLevel(int level, Inside&& inside);
 
@@ -70,16 +81,63 @@ class LebPadding {
     for (int k = 0; k < components_; ++k) r[static_cast<std::size_t>(k)] = inside(vi, k);
     return r;
   }
-  const LebValues& at(const GridPoint& q) const;
-  std::size_t size() const { return values_.size(); }
+  // Throws std::logic_error also for a shell point of a level not added yet.
+  const LebValues& at(const GridPoint& q) const {
+    const Entry* e = find(q);
+    if (!e || !e->added) outsideShell(q);
+    return e->values;
+  }
+  // The shell's points added so far.
+  std::size_t size() const { return added_; }
 
   // The number of shell points, from the extents alone (a closed form per level and orientation).
   static std::uint64_t shellPoints(const LebGrid& grid, const Dims3& dims);
-  // An upper bound on one entry's memory, for the bounds: the table is reserved for the whole
-  // shell, so at most 4 slots of a key and the values (flat_u64_map.h), and it never doubles.
-  static constexpr std::uint64_t kBytesPerPoint = 4 * (8 + sizeof(LebValues));
+  // The bytes the constructor allocates (the blocks and their entries, from the extents alone), for
+  // the memory bounds: 16 bytes an entry, about 4/3 of an entry a shell point in large volumes
+  // (0.71 MB for 256x256x128, 16.8 MB for 1024^3).
+  static std::uint64_t tableBytes(const LebGrid& grid, const Dims3& dims);
+  // What this table allocated: tableBytes of its grid and extents.
+  std::uint64_t allocatedBytes() const { return entries_.size() * sizeof(Entry) + blocks_.size() * sizeof(Block); }
 
  private:
+  struct Entry {
+    LebValues values{};
+    std::uint32_t added = 0;
+  };
+  // A block of the table: the shell's points of one scale H = 2^s and one outside set m, at
+  // entries first + sum over the other axes a of (q_a >> s) * stride[a]; pinned[a] is q_a on the
+  // axes of m. Empty (no points) where count is 0.
+  struct Block {
+    std::uint64_t first = 0, count = 0;
+    std::array<std::uint64_t, 3> stride{};
+    std::array<int, 3> pinned{};
+  };
+  // The blocks of every scale 2^s (s = 0..k) and outside set m (1..7), at 8 s + m, packed from 0;
+  // none for a volume that fills its grid.
+  static std::vector<Block> layout(const LebGrid& grid, const Dims3& dims);
+  // q's entry, or null where q lies outside the shell (or inside the volume).
+  [[gnu::always_inline]] const Entry* find(const GridPoint& q) const {
+    const std::ptrdiff_t i = indexOf(q);
+    return i < 0 ? nullptr : &entries_[static_cast<std::size_t>(i)];
+  }
+  [[gnu::always_inline]] std::ptrdiff_t indexOf(const GridPoint& q) const {
+    unsigned m = 0;
+    int s = grid_.k;
+    for (int a = 0; a < 3; ++a) {
+      m |= static_cast<unsigned>(q[a] >= dims_[a]) << a;
+      s = std::min(s, std::countr_zero(static_cast<unsigned>(q[a])));  // 0 has 32 zeros: never the least
+    }
+    if (m == 0) return -1;  // inside the volume (always, when the volume fills its grid and blocks_ is empty)
+    const Block& b = blocks_[8 * static_cast<std::size_t>(s) + m];
+    std::uint64_t i = b.first;
+    for (int a = 0; a < 3; ++a) {
+      if (((m >> a) & 1u) && q[a] != b.pinned[a]) return -1;
+      i += static_cast<std::uint64_t>(q[a] >> s) * b.stride[a];  // 0 on the pinned axes
+    }
+    return b.count != 0 ? static_cast<std::ptrdiff_t>(i) : -1;
+  }
+  [[noreturn]] static void outsideShell(const GridPoint& q);
+
   // Calls f(p, scaleLog2, oddAxes) for every shell point of `level`.
   template <class F>
   void forEachShellPoint(int level, F&& f) const;
@@ -87,7 +145,9 @@ class LebPadding {
   LebGrid grid_;
   Dims3 dims_;
   int components_;
-  FlatU64Map<LebValues> values_;  // by linearIndex, reserved for the whole shell
+  std::vector<Block> blocks_;
+  std::vector<Entry> entries_;
+  std::size_t added_ = 0;
 };
 
 template <class F>
@@ -121,8 +181,14 @@ void LebPadding::forEachShellPoint(int level, F&& f) const {
 template <class Inside>
 void LebPadding::addLevel(int level, Inside&& inside) {
   forEachShellPoint(level, [&](const GridPoint& p, int scaleLog2, unsigned odd) {
-    values_.try_emplace(grid_.linearIndex(p), predictPoint(p, level, scaleLog2, odd, components_,
-                                                           [&](const GridPoint& q) { return valuesAt(q, inside); }));
+    const std::ptrdiff_t i = indexOf(p);
+    if (i < 0) outsideShell(p);  // a defect of the layout: forEachShellPoint gives shell points
+    Entry& e = entries_[static_cast<std::size_t>(i)];
+    if (e.added) return;
+    e.values =
+        predictPoint(p, level, scaleLog2, odd, components_, [&](const GridPoint& q) { return valuesAt(q, inside); });
+    e.added = 1;
+    ++added_;
   });
 }
 

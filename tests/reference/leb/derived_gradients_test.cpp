@@ -124,7 +124,7 @@ TEST(DerivedGradients, TheGradientsAreDerivedWhenAskedAndCountInTheMemoryBound) 
   const Volume<std::uint16_t> v = smooth({9, 10, 11}, 8);
   const LebStream derived = parseLebStream(encodeWith(v, 8, 12, LebCoder::Lead1, true, true));
   const LebStream stored = parseLebStream(encodeWith(v, 8, 12, LebCoder::Lead1, true, false));
-  const std::uint64_t shell = LebPadding::shellPoints(derived.grid, derived.dims) * LebPadding::kBytesPerPoint;
+  const std::uint64_t shell = LebPadding::tableBytes(derived.grid, derived.dims);
   EXPECT_GT(shell, 0u);
   EXPECT_EQ(lebDecodeMemoryBytes(derived), 5u * 9 * 10 * 11 + shell);
   EXPECT_EQ(lebDecodeMemoryBytes(stored), 5u * 9 * 10 * 11 + 2 * shell);

@@ -435,12 +435,13 @@ TEST_F(LebCorrupt, ThePageTableListsExactlyThePagesOfTheVolume) {
 TEST(LebDecodeMemory, TheBoundComesFromTheHeaderAndFollowsTheVolume) {
   const LebStream thin = parseLebStream(encodeLeb(noise({65, 1, 1}, 8, 3), 8));
   const std::uint64_t shell = LebPadding::shellPoints(thin.grid, thin.dims);
-  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + 2 * shell * LebPadding::kBytesPerPoint);
+  EXPECT_EQ(lebDecodeMemoryBytes(thin), 2u * 65 + 3u * 65 + 2 * LebPadding::tableBytes(thin.grid, thin.dims));
   EXPECT_LT(shell, 65u * 8);  // of the 65^3 grid's 274560 padding points
+  EXPECT_LT(LebPadding::tableBytes(thin.grid, thin.dims), 65u * 8 * 16);
   LebEncodeOptions o;
   o.gradients = false;
   const LebStream cube = parseLebStream(encodeLeb(noise({9, 9, 9}, 16, 4), 16, o));
-  EXPECT_EQ(lebDecodeMemoryBytes(cube), 2u * 729);  // an unpadded grid: no shell
+  EXPECT_EQ(lebDecodeMemoryBytes(cube), 2u * 729);  // an unpadded grid: no shell, no table
   const LebDecoded d = decodeLeb(thin);
   EXPECT_EQ(d.data.data().size(), 65u);
 }

@@ -80,12 +80,37 @@ TEST(LebPadding, LevelByLevelEqualsTheRecursivePrediction) {
       return memo[g.linearIndex(p)] = predictMidpoint(value(e.a), value(e.b));
     };
     for (std::uint64_t q : shell) EXPECT_EQ(padding.at(g.pointAt(q))[0], value(g.pointAt(q)));
-    for (std::uint64_t i = 0; i < g.pointCount(); ++i)  // the first padding point outside the shell is refused
+    for (std::uint64_t i = 0; i < g.pointCount(); ++i)  // every padding point outside the shell is refused
       if (!insideVolume(g.pointAt(i), d) && !shell.count(i)) {
-        EXPECT_THROW(padding.at(g.pointAt(i)), std::logic_error);
-        break;
+        EXPECT_THROW(padding.at(g.pointAt(i)), std::logic_error) << pointText(g.pointAt(i));
       }
+    EXPECT_EQ(padding.allocatedBytes(), LebPadding::tableBytes(g, d));
   }
+}
+
+// A shell point of a level not added yet is refused, not read as a value: the levels are added
+// coarse to fine, and a prediction reads only coarser points.
+TEST(LebPadding, APointOfALevelNotAddedYetIsRefused) {
+  const Dims3 d{20, 31, 9};
+  const LebGrid g = lebGridCovering(d);
+  const auto inside = [](std::size_t, int) { return 7; };
+  LebPadding padding(g, d, 1);
+  const int added = g.levelCount() / 2;
+  for (int level = -1; level <= added; ++level) padding.addLevel(level, inside);
+  int refused = 0, read = 0;
+  for (std::uint64_t q : shellByDefinition(g, d)) {
+    const GridPoint p = g.pointAt(q);
+    if (!isRootCorner(g, p) && classifyPoint(g, p).level > added) {
+      EXPECT_THROW(padding.at(p), std::logic_error) << pointText(p);
+      ++refused;
+    } else {
+      EXPECT_NO_THROW(padding.at(p)) << pointText(p);
+      ++read;
+    }
+  }
+  EXPECT_GT(refused, 0);
+  EXPECT_GT(read, 0);
+  EXPECT_EQ(padding.size(), static_cast<std::size_t>(read));
 }
 
 }  // namespace
