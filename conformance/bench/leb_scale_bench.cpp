@@ -188,8 +188,9 @@ BenchTable lebScaleBench(const BenchOptions& o) {
       "made slice by slice. The 1025x1x1 volume sits in a 1025^3 grid: with the padding "
       "shell (reference/leb/leb_padding.h) and only the pages of the volume stored (reference/leb/FORMAT.md, version "
       "2) it costs what its samples cost. The 2048x2048x1920 rows are estimates, not runs: seconds scaled by the "
-      "samples from the largest volume measured, peak RSS that volume's plus the larger shell of padding "
-      "(96 bytes a point), disk the volume, gradients and stream (encode: input, gradients scratch and stream; "
+      "samples from the largest volume measured, peak RSS that volume's plus the larger tables of the shell of "
+      "padding (LebPadding::tableBytes: the encoder holds one channel's, the decoder both), disk the volume, gradients "
+      "and stream (encode: input, gradients scratch and stream; "
       "decode: stream, volume and gradients). `voxref bench --filter leb.paper_scale` runs that volume (the grid of "
       "k = 11, 2049^3) the same way; it runs only when named, for its hours and 70 GB of scratch disk. " +
       std::string(o.quick ? "Quick mode: 128^3 instead of 512^3 and 1024^3." : "");

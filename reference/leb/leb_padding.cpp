@@ -8,9 +8,13 @@ namespace voxref::ref {
 
 LebPadding::LebPadding(const LebGrid& grid, const Dims3& dims, int components)
     : grid_(grid), dims_(dims), components_(components), blocks_(layout(grid, dims)) {
+  entries_.resize(static_cast<std::size_t>(entryCount(blocks_)));
+}
+
+std::uint64_t LebPadding::entryCount(const std::vector<Block>& blocks) {
   std::uint64_t entries = 0;
-  for (const Block& b : blocks_) entries += b.count;
-  entries_.resize(static_cast<std::size_t>(entries));
+  for (const Block& b : blocks) entries += b.count;
+  return entries;
 }
 
 std::vector<LebPadding::Block> LebPadding::layout(const LebGrid& grid, const Dims3& dims) {
@@ -46,9 +50,7 @@ std::vector<LebPadding::Block> LebPadding::layout(const LebGrid& grid, const Dim
 
 std::uint64_t LebPadding::tableBytes(const LebGrid& grid, const Dims3& dims) {
   const std::vector<Block> blocks = layout(grid, dims);
-  std::uint64_t entries = 0;
-  for (const Block& b : blocks) entries += b.count;
-  return entries * sizeof(Entry) + blocks.size() * sizeof(Block);
+  return bytesOf(blocks.size(), entryCount(blocks));
 }
 
 void LebPadding::outsideShell(const GridPoint& q) {

@@ -97,7 +97,7 @@ class LebPadding {
   // (0.71 MB for 256x256x128, 16.8 MB for 1024^3).
   static std::uint64_t tableBytes(const LebGrid& grid, const Dims3& dims);
   // What this table allocated: tableBytes of its grid and extents.
-  std::uint64_t allocatedBytes() const { return entries_.size() * sizeof(Entry) + blocks_.size() * sizeof(Block); }
+  std::uint64_t allocatedBytes() const { return bytesOf(blocks_.size(), entries_.size()); }
 
  private:
   struct Entry {
@@ -115,6 +115,10 @@ class LebPadding {
   // The blocks of every scale 2^s (s = 0..k) and outside set m (1..7), at 8 s + m, packed from 0;
   // none for a volume that fills its grid.
   static std::vector<Block> layout(const LebGrid& grid, const Dims3& dims);
+  static std::uint64_t entryCount(const std::vector<Block>& blocks);
+  static std::uint64_t bytesOf(std::uint64_t blocks, std::uint64_t entries) {
+    return blocks * sizeof(Block) + entries * sizeof(Entry);
+  }
   // q's entry, or null where q lies outside the shell (or inside the volume).
   [[gnu::always_inline]] const Entry* find(const GridPoint& q) const {
     const std::ptrdiff_t i = indexOf(q);
