@@ -47,10 +47,13 @@ class BitReader {
 
   // The next n bits (1 <= n <= 32) without consuming them.
   std::uint32_t peek(int n) const { return static_cast<std::uint32_t>(buf_ >> (64 - n)); }
+  // Refills after every skip, not only once fewer than 32 bits are left: the lead-1 reader's
+  // values take 1 to 10 bits, so a test of what is left branched at no pattern a predictor learns,
+  // and a refill of the buffer that still holds its bits changes nothing (docs/leb.md).
   void skip(int n) {
     buf_ <<= n;
     avail_ -= n;
-    if (avail_ < 32) refill();
+    refill();
   }
   std::uint32_t get(int n) {
     if (n == 0) return 0;
