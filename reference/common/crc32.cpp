@@ -49,8 +49,8 @@ std::uint32_t slicedState(std::uint32_t c, const unsigned char* p, std::size_t n
 #if defined(__x86_64__)
 // x^n mod P in the reflected form the folding multiplies by: the 32-bit remainder bit-reversed,
 // shifted left by one (the product of two reflected operands comes out one bit low). Gopal et al.,
-// "Fast CRC Computation for Generic Polynomials Using PCLMULQDQ Instruction" (Intel, 2009),
-// section 4: a 64-bit half of a 128-bit block moves forward by d bits when it is multiplied by
+// "Fast CRC Computation for Generic Polynomials Using PCLMULQDQ Instruction" (Intel, 2009): a
+// 64-bit half of a 128-bit block moves forward by d bits when it is multiplied by
 // x^(d + 32) (the half that comes first in the stream) or x^(d - 32) (the other).
 constexpr std::uint64_t foldConstant(int n) {
   std::uint32_t r = 1;  // x^0, bit i the coefficient of x^i (the normal form, polynomial 0x04C11DB7)
