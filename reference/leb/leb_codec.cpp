@@ -393,12 +393,16 @@ struct WorkSpan {
   double base = 0.0, span = 1.0;
 };
 
-// Items [0, count) in batches of a few per worker, the window between batches: fn(first, end)
-// runs one batch (in parallel inside), then the window, told how far `part` of the work has come.
-// The batches do not change any result.
+// A few items a worker: what the encoder holds at once, and what the window lets through between
+// two looks.
+int windowBatch(int threads) { return 4 * workerCount(threads); }
+
+// Items [0, count) in batches of `batch` (at least one), the window between batches: fn(first,
+// end) runs one batch (in parallel inside), then the window, told how far `part` of the work has
+// come. The batches do not change any result.
 template <class F>
-void inBatches(int count, int threads, const LebWindow& window, WorkSpan part, F&& fn) {
-  const int batch = 4 * workerCount(threads);
+void inBatches(int count, int batch, int threads, const LebWindow& window, WorkSpan part, F&& fn) {
+  batch = std::max(1, batch);
   for (int first = 0; first < count; first += batch) {
     const int end = std::min(count, first + batch);
     fn(first, end);
@@ -419,7 +423,7 @@ std::uint64_t encodeChannel(const HzOrder& order, const Dims3& dims, const Chann
   const int runs = static_cast<int>(prediction.runs());
   std::vector<std::unique_ptr<Lead1Counter>> counters(static_cast<std::size_t>(runs));  // runs with a stored page
   std::vector<std::size_t> storedInRun(static_cast<std::size_t>(runs), 0);
-  inBatches(runs, threads, window, {part.base, part.span / 2}, [&](int first, int end) {
+  inBatches(runs, windowBatch(threads), threads, window, {part.base, part.span / 2}, [&](int first, int end) {
     parallelFor(end - first, threads, [&](int i) {
       const auto r = static_cast<std::size_t>(first + i);
       const RunDeltas d = prediction.run(r);
@@ -448,32 +452,33 @@ std::uint64_t encodeChannel(const HzOrder& order, const Dims3& dims, const Chann
     std::vector<std::string> bytes;
   };
   std::vector<CodedRun> coded;
-  inBatches(runs, threads, window, {part.base + part.span / 2, part.span / 2}, [&](int first, int end) {
-    coded.assign(static_cast<std::size_t>(end - first), {});
-    parallelFor(end - first, threads, [&](int i) {
-      RunDeltas d = prediction.run(static_cast<std::uint64_t>(first + i));
-      CodedRun& c = coded[static_cast<std::size_t>(i)];
-      for (const auto& page : d.pages) {
-        if (encoder) {
-          BitWriter w;
-          encoder->encodePage(page, w);
-          c.bytes.push_back(w.finish());
-        } else {
-          c.bytes.push_back(encodeAdaptivePage(page, spec.valueBits, spec.components));
-        }
-        c.crc.push_back(crc32(c.bytes.back()));
-      }
-      c.storedPage = std::move(d.storedPage);
-    });
-    for (const CodedRun& c : coded)
-      for (std::size_t j = 0; j < c.bytes.size(); ++j) {
-        write(offset, c.bytes[j]);
-        offset += c.bytes[j].size();
-        table.storedPage.push_back(c.storedPage[j]);
-        table.pageLength.push_back(static_cast<std::uint32_t>(c.bytes[j].size()));
-        table.pageCrc.push_back(c.crc[j]);
-      }
-  });
+  inBatches(runs, windowBatch(threads), threads, window, {part.base + part.span / 2, part.span / 2},
+            [&](int first, int end) {
+              coded.assign(static_cast<std::size_t>(end - first), {});
+              parallelFor(end - first, threads, [&](int i) {
+                RunDeltas d = prediction.run(static_cast<std::uint64_t>(first + i));
+                CodedRun& c = coded[static_cast<std::size_t>(i)];
+                for (const auto& page : d.pages) {
+                  if (encoder) {
+                    BitWriter w;
+                    encoder->encodePage(page, w);
+                    c.bytes.push_back(w.finish());
+                  } else {
+                    c.bytes.push_back(encodeAdaptivePage(page, spec.valueBits, spec.components));
+                  }
+                  c.crc.push_back(crc32(c.bytes.back()));
+                }
+                c.storedPage = std::move(d.storedPage);
+              });
+              for (const CodedRun& c : coded)
+                for (std::size_t j = 0; j < c.bytes.size(); ++j) {
+                  write(offset, c.bytes[j]);
+                  offset += c.bytes[j].size();
+                  table.storedPage.push_back(c.storedPage[j]);
+                  table.pageLength.push_back(static_cast<std::uint32_t>(c.bytes[j].size()));
+                  table.pageCrc.push_back(c.crc[j]);
+                }
+            });
   if (table.storedPage.size() != stored) throw std::logic_error("LEB encode: the two passes stored different pages");
   write(descriptorAt, lebDescriptorBytes(lebPageCount(order.grid(), pageBits), table));
   return offset;
@@ -709,59 +714,60 @@ void decodeChannels(const LebStream& s, const HzOrder& order, const LebVolumeOut
     segments.swap(sorted);
     // In batches of kPagesPerRun segments per worker item, the window between batches. (Items of
     // 4 segments cut the 1024^3 bench's decode peak by 4 %, 1.73 to 1.66 GB, for 1.7 times the
-    // time: batch overhead and refaults after trims.)
+    // time: batch overhead and refaults after trims.) Without a window the level is one batch:
+    // its workers then start and meet once a level, not once a batch (the engine's decode on two
+    // threads: 4.5 % of its time, docs/leb.md).
     const int perBatch = static_cast<int>(kPagesPerRun);
     // The group's indices up to this level's, and the level's share of them.
     const double grid = static_cast<double>(order.size());
     const WorkSpan levelPart{part.base + part.span * static_cast<double>(begin) / grid,
                              part.span * static_cast<double>(end - begin) / grid};
-    inBatches((static_cast<int>(segments.size()) + perBatch - 1) / perBatch, threads, window, levelPart,
-              [&](int firstItem, int lastItem) {
-                const int from = firstItem * perBatch,
-                          to = std::min(static_cast<int>(segments.size()), lastItem * perBatch);
-                // Two segments an item: their pages' deltas of each channel are decoded together
-                // (readBoth). In chunks (parallelForChunked): the segments are in slab order, so a
-                // worker's chunk is a block of the volume, about the same at every level, whose
-                // parents it wrote itself (the engine's whole decode on 2 threads, median 218 to
-                // 247 MB/s: docs/leb.md, "Kept").
-                parallelForChunked((to - from + 1) / 2, threads, [&](int item) {
-                  const int at = from + 2 * item, itemEnd = std::min(to, at + 2);
-                  SegmentDeltas work[2][2];  // [segment][channel]
-                  int n = 0;
-                  for (int k = at; k < itemEnd; ++k) {
-                    const Segment& seg = segments[static_cast<std::size_t>(k)];
-                    if (!seg.stored) {  // pages the stream lacks: no point of the volume may lie in them
-                      const ChannelDecode& c = *group[0];
-                      walkInside(order, s.dims, c.padding, c.inside, seg.begin, seg.end,
-                                 [&](std::uint64_t h, std::size_t, int, std::int32_t) {
-                                   throw pageNotStored(c.channel, h >> pb);
-                                 });
-                      continue;
-                    }
-                    // The segment's points inside the volume, one value a component each.
-                    const std::uint64_t points = order.countInside(s.dims, seg.begin, seg.end);
-                    for (std::size_t j = 0; j < channels; ++j) {
-                      ChannelDecode& c = *group[j];
-                      std::optional<LebPageReader>& reader = c.open.find(seg.page)->second;
-                      if (!reader) reader.emplace(openPage(s, c.channel, seg.page));
-                      work[n][j].allocate(*reader, seg.begin, seg.end,
-                                          points * static_cast<std::uint64_t>(c.spec.components));
-                    }
-                    ++n;
-                  }
-                  for (std::size_t j = 0; j < channels; ++j) {
-                    if (n == 2)
-                      LebPageReader::readBoth(*work[0][j].reader, work[0][j].deltas(), *work[1][j].reader,
-                                              work[1][j].deltas());
-                    else if (n == 1)
-                      work[0][j].reader->read(work[0][j].deltas());
-                  }
-                  for (int k = 0; k < n; ++k)
-                    withSegment(out, group, work[k], [&](const auto& values, auto&... stores) {
-                      reconstructSegment(order, s.dims, values, work[k][0].begin, work[k][0].end, stores...);
-                    });
-                });
+    const int items = (static_cast<int>(segments.size()) + perBatch - 1) / perBatch;
+    inBatches(
+        items, window ? windowBatch(threads) : items, threads, window, levelPart, [&](int firstItem, int lastItem) {
+          const int from = firstItem * perBatch, to = std::min(static_cast<int>(segments.size()), lastItem * perBatch);
+          // Two segments an item: their pages' deltas of each channel are decoded together
+          // (readBoth). In chunks (parallelForChunked): the segments are in slab order, so a
+          // worker's chunk is a block of the volume, about the same at every level, whose
+          // parents it wrote itself (the engine's whole decode on 2 threads, median 218 to
+          // 247 MB/s: docs/leb.md, "Kept").
+          parallelForChunked((to - from + 1) / 2, threads, [&](int item) {
+            const int at = from + 2 * item, itemEnd = std::min(to, at + 2);
+            SegmentDeltas work[2][2];  // [segment][channel]
+            int n = 0;
+            for (int k = at; k < itemEnd; ++k) {
+              const Segment& seg = segments[static_cast<std::size_t>(k)];
+              if (!seg.stored) {  // pages the stream lacks: no point of the volume may lie in them
+                const ChannelDecode& c = *group[0];
+                walkInside(
+                    order, s.dims, c.padding, c.inside, seg.begin, seg.end,
+                    [&](std::uint64_t h, std::size_t, int, std::int32_t) { throw pageNotStored(c.channel, h >> pb); });
+                continue;
+              }
+              // The segment's points inside the volume, one value a component each.
+              const std::uint64_t points = order.countInside(s.dims, seg.begin, seg.end);
+              for (std::size_t j = 0; j < channels; ++j) {
+                ChannelDecode& c = *group[j];
+                std::optional<LebPageReader>& reader = c.open.find(seg.page)->second;
+                if (!reader) reader.emplace(openPage(s, c.channel, seg.page));
+                work[n][j].allocate(*reader, seg.begin, seg.end,
+                                    points * static_cast<std::uint64_t>(c.spec.components));
+              }
+              ++n;
+            }
+            for (std::size_t j = 0; j < channels; ++j) {
+              if (n == 2)
+                LebPageReader::readBoth(*work[0][j].reader, work[0][j].deltas(), *work[1][j].reader,
+                                        work[1][j].deltas());
+              else if (n == 1)
+                work[0][j].reader->read(work[0][j].deltas());
+            }
+            for (int k = 0; k < n; ++k)
+              withSegment(out, group, work[k], [&](const auto& values, auto&... stores) {
+                reconstructSegment(order, s.dims, values, work[k][0].begin, work[k][0].end, stores...);
               });
+          });
+        });
     for (ChannelDecode* c : group)
       for (auto it = c->open.begin(); it != c->open.end() && std::min(order.size(), (it->first + 1) << pb) <= end;) {
         finishPage(*it->second, it->second->valuesRead() / static_cast<std::size_t>(c->spec.components), c->channel,
