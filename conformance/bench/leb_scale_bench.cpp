@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -149,24 +148,24 @@ BenchTable lebScaleBench(const BenchOptions& o) {
   std::filesystem::remove(dir);
   // The paper's largest volume, 2048x2048x1920 (Gregorski et al. 2004, section 5), on paper: time
   // in proportion to the samples of the largest volume measured here; resident memory its peak
-  // plus the larger table of the shell of padding (leb_padding.h, a closed form of the extents): the
-  // encoder holds one channel's at a time, the decoder both; disk the volume (1 byte a sample), the encoder's gradients
-  // file (3), the stream (this run's bytes per sample) and the decoded volume and gradients (4).
+  // plus the larger tables of the shell of padding (leb_padding.h, a closed form of the extents);
+  // disk the volume (1 byte a sample), the encoder's gradients file (3), the stream (this run's
+  // bytes per sample) and the decoded volume and gradients (4).
   if (!t.data["volumes"].empty()) {
     const nlohmann::json& big = t.data["volumes"].back();
     const ref::Dims3 measured{big["dims"][0].get<int>(), big["dims"][1].get<int>(), big["dims"][2].get<int>()};
     const ref::Dims3 paper{2048, 2048, 1920};
     const double scale = static_cast<double>(ref::sampleCount(paper)) / big["samples"].get<double>();
     const double shellGrowth =
-        (static_cast<double>(ref::LebPadding::tableBytes(ref::LebGrid{11}, paper)) -
-         static_cast<double>(ref::LebPadding::tableBytes(ref::lebGridCovering(measured), measured)));
-    const std::map<std::string, double> channelsHeld = {{"encode", 1.0}, {"decode", 2.0}};
+        static_cast<double>(ref::LebPadding::tableBytes(ref::LebGrid{11}, paper)) -
+        static_cast<double>(ref::LebPadding::tableBytes(ref::lebGridCovering(measured), measured));
     const double samples = static_cast<double>(ref::sampleCount(paper));
     const double streamPerSample = big["stream_bytes"].get<double>() / big["samples"].get<double>();
     nlohmann::json estimate = {{"dims", {2048, 2048, 1920}}, {"from", ref::dimsText(measured)}};
-    for (const char* step : {"encode", "decode"}) {
+    // The shells' tables each step holds: the encoder one channel's at a time, the decoder both.
+    for (const auto& [step, tables] : {std::pair<const char*, double>{"encode", 1.0}, {"decode", 2.0}}) {
       const double seconds = big[step]["seconds"].get<double>() * scale;
-      const double peak = big[step]["peak_resident_bytes"].get<double>() + shellGrowth * channelsHeld.at(step);
+      const double peak = big[step]["peak_resident_bytes"].get<double>() + shellGrowth * tables;
       const double disk = 4.0 * samples + streamPerSample * samples;
       estimate[step] = {{"seconds", seconds}, {"peak_resident_bytes", peak}, {"disk_bytes", disk}};
       t.rows.push_back({"2048x2048x1920 (the paper's; estimated from " + ref::dimsText(measured) + ")", step,
