@@ -77,6 +77,14 @@ Timing measure(const std::function<void()>& fn, int minRuns) {
   return timingOf(std::move(runs));
 }
 
+std::array<Timing, 2> measureTakingTurns(const std::function<void()>& a, const std::function<void()>& b, int rounds) {
+  std::array<std::vector<double>, 2> runs;
+  for (int r = 0; r < std::max(1, rounds); ++r)
+    for (const int which : {r % 2, 1 - r % 2})
+      runs[static_cast<std::size_t>(which)].push_back(measureOnce(which == 0 ? a : b).median);
+  return {timingOf(std::move(runs[0])), timingOf(std::move(runs[1]))};
+}
+
 Timing timingOf(std::vector<double> runs) {
   std::sort(runs.begin(), runs.end());
   return {runs[runs.size() / 2], runs.front(), runs.back(), static_cast<int>(runs.size()), false};

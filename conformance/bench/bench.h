@@ -2,6 +2,7 @@
 // on this machine, written as markdown and JSON. Timings are reported, never asserted.
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <functional>
 #include <iosfwd>
@@ -48,6 +49,10 @@ std::string formatSeconds(const Timing& t);
 // Median of repeated runs of fn: at least `minRuns` runs; beyond those, more while a run takes
 // under a second, up to five within about two seconds. min and max give the spread.
 Timing measure(const std::function<void()>& fn, int minRuns = 1);
+// Two things compared as a ratio, side by side: `rounds` runs of each (at least one), taking turns
+// (a then b in even rounds, b then a in odd ones), so that a drift of the machine's speed during the
+// run falls on both alike. Returns their Timings, a's first.
+std::array<Timing, 2> measureTakingTurns(const std::function<void()>& a, const std::function<void()>& b, int rounds);
 // The Timing of measured runs (seconds each; at least one): their median, min and max.
 Timing timingOf(std::vector<double> runs);
 // One run of fn.

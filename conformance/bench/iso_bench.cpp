@@ -112,6 +112,11 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
   return t;
 }
 
+// Issue 18, goal 3: the first mesh from the compressed stream within 1.3 times the uncompressed
+// grid's time; each measured this many times, taking turns.
+constexpr double kFirstMeshGoal = 1.3;
+constexpr int kFirstMeshRounds = 5;
+
 BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes) {
   BenchTable t;
   t.id = "iso.extraction";
@@ -121,6 +126,7 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
                "triangles",
                "uncompressed",
                "compressed (cold page cache)",
+               "compressed / uncompressed (issue 18: within 1.3)",
                "pages decoded",
                "Embree mesh rays/s (1 thread)",
                "Embree mesh rays/s (all)",
@@ -136,24 +142,38 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
     budget.maxSplits = std::size_t{1} << 22;
     refinement.update(camera, budget);
     ref::IsoMesh mesh;
-    const Timing un = measure([&] { mesh = ref::extractIsosurface(refinement.mesh(), dense, &bounds, s.isovalue); });
     std::uint64_t pages = 0;
-    const Timing co = measure([&] {
-      ref::CompressedGridField field(stream, std::size_t{64} << 20);
-      ref::extractIsosurface(refinement.mesh(), field, &bounds, s.isovalue);
-      pages = field.reader().cacheStats().misses;
-    });
+    const auto [un, co] =
+        measureTakingTurns([&] { mesh = ref::extractIsosurface(refinement.mesh(), dense, &bounds, s.isovalue); },
+                           [&] {
+                             ref::CompressedGridField field(stream, std::size_t{64} << 20);
+                             ref::extractIsosurface(refinement.mesh(), field, &bounds, s.isovalue);
+                             pages = field.reader().cacheStats().misses;
+                           },
+                           o.quick ? 1 : kFirstMeshRounds);
+    const double ratio = co.median / un.median;
     const double rays = static_cast<double>(camera.width) * camera.height;
     const Timing m1 = measure([&] { fx::castMesh(mesh, camera, 1); });
     const Timing mAll = measure([&] { fx::castMesh(mesh, camera, o.threads); });
     const Timing exact = measure([&] { fx::castTrilinearIsosurface(volume, s.isovalue, camera, o.threads); });
     t.rows.push_back({s.name, std::to_string(mesh.triangleCount()), formatSeconds(un), formatSeconds(co),
+                      formatNumber("%.3f", ratio) + (ratio <= kFirstMeshGoal ? " (within)" : " (over)"),
                       std::to_string(pages) + " of " + std::to_string(2 * stream->pageCount()),
                       formatNumber("%.0f", rays / m1.median), formatNumber("%.0f", rays / mAll.median),
                       formatNumber("%.0f", rays / exact.median)});
+    t.data["rows"].push_back({{"data_set", s.name},
+                              {"triangles", mesh.triangleCount()},
+                              {"uncompressed", toJson(un)},
+                              {"compressed", toJson(co)},
+                              {"compressed_over_uncompressed", ratio},
+                              {"pages_decoded", pages}});
   }
   t.notes =
-      "The mesh of the first camera of each orbit, refined without a split budget. Extraction reads every vertex of "
+      "The mesh of the first camera of each orbit, refined without a split budget. The two extractions take turns, " +
+      std::to_string(o.quick ? 1 : kFirstMeshRounds) +
+      " runs each, the medians compared (issue 18's goal: the first mesh from the compressed stream within " +
+      formatNumber("%.1f", kFirstMeshGoal) +
+      " times the uncompressed grid's time, on the engine; the paper's was 1.1). Extraction reads every vertex of "
       "every leaf "
       "tetrahedron whose diamond's range holds the isovalue; from the compressed stream through LebReader with a 64 MB "
       "page cache, "
