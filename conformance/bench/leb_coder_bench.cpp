@@ -1,5 +1,7 @@
 #include "conformance/bench/leb_coder_bench.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 #include <stdexcept>
@@ -48,7 +50,17 @@ struct CoderFigure {
   std::string coder;
   double bytes = 0.0;
   Timing decode;
-  std::string pieceCodec;  // a coder on pieces (piecewise): the general-purpose coder alone, "xz -9"
+};
+
+// The coders of a channel's rows, in the table's order.
+enum CoderRow : std::size_t {
+  kLead1,         // the paper's lead-1 Huffman, pages of 2^12
+  kAdaptive12,    // voxref's adaptive coder, pages of 2^12
+  kAdaptive16,    // the same, pages of 2^16
+  kZstd,          // zstd -19 on the whole raw channel (the gradients' goal)
+  kXz,            // xz -9 on the whole raw channel (the data's goal)
+  kGoalOnPieces,  // the channel's goal coder on pieces of 2^16 samples (an anchor)
+  kCoderRows
 };
 
 // The stream's bytes of an adaptive channel besides its pages: its descriptor (no code table; 12
@@ -77,8 +89,7 @@ CoderFigure adaptive(const ChannelPages& c, int pageBits, int runs) {
     }
   };
   decodeAll(true);
-  return {"adaptive (pages of 2^" + std::to_string(pageBits) + ")", bytes, measure([&] { decodeAll(false); }, runs),
-          ""};
+  return {"adaptive (pages of 2^" + std::to_string(pageBits) + ")", bytes, measure([&] { decodeAll(false); }, runs)};
 }
 
 // The paper's code: the stream's own channel (pages of 2^12), its pages decoded by the lead-1
@@ -101,11 +112,11 @@ CoderFigure lead1(const ref::LebStream& s, const ChannelPages& c, int runs) {
     }
   };
   decodeAll(true);
-  return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs), ""};
+  return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs)};
 }
 
 CoderFigure baseline(const BaselineResult& b) {
-  return {b.codec + " (whole channel, no random access)", static_cast<double>(b.bytes), b.decompress, ""};
+  return {b.codec + " (whole channel, no random access)", static_cast<double>(b.bytes), b.decompress};
 }
 
 // The pages of the adaptive coder's larger size hold up to 2^16 points; the general-purpose
@@ -124,7 +135,7 @@ CoderFigure piecewise(const std::string& raw, bool data, int bytesPerSample) {
       piecewiseBaseline(raw, pieceBytes, [&](std::string_view piece) { return goalCoder(piece, data); });
   return {goalCoderName(data) + " on pieces of 2^" + std::to_string(kPieceSampleBits) + " samples (" +
               std::to_string(pieceBytes) + " bytes), each on its own: random access as the adaptive 2^16 pages",
-          static_cast<double>(b.bytes), b.decompress, goalCoderName(data)};
+          static_cast<double>(b.bytes), b.decompress};
 }
 
 // Order-0 entropy of the points' gradients taken as 3-byte symbols, in bytes: what a coder of
@@ -145,11 +156,10 @@ double tripleEntropyBytes(const std::string& gradients) {
 struct ChannelFigures {
   ref::LebChannelKind kind;
   double rawBytes = 0.0;
-  // lead-1, adaptive 2^12, adaptive 2^16, zstd -19, xz -9, the goal's coder on pieces (piecewise)
-  std::vector<CoderFigure> coders;
-  double tripleEntropy = 0.0;  // gradients only
-  Timing derive;               // gradients only: quantizedGradients of the samples, one thread
-  double repeatedRows = 0.0;   // repeatedRowShare of the channel's x-rows
+  std::array<CoderFigure, kCoderRows> coders;  // by CoderRow
+  double tripleEntropy = 0.0;                  // gradients only
+  Timing derive;                               // gradients only: quantizedGradients of the samples, one thread
+  double repeatedRows = 0.0;                   // repeatedRowShare of the channel's x-rows
 };
 
 std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDataset& d) {
@@ -163,12 +173,12 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
     const std::string raw = data ? dataBytes(d.volume, d.bits) : gradientBytes(d.volume);
     ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, 0.0, {}};
     const ChannelPages p12 = channelPages(d, kind, 12);
-    f.coders.push_back(lead1(s, p12, runs));
-    f.coders.push_back(adaptive(p12, 12, runs));
-    f.coders.push_back(adaptive(channelPages(d, kind, 16), 16, runs));
-    f.coders.push_back(baseline(zstdBaseline(raw, 19)));
-    f.coders.push_back(baseline(xzBaseline(raw, 9)));
-    f.coders.push_back(piecewise(raw, data, data ? d.bits / 8 : 3));
+    f.coders[kLead1] = lead1(s, p12, runs);
+    f.coders[kAdaptive12] = adaptive(p12, 12, runs);
+    f.coders[kAdaptive16] = adaptive(channelPages(d, kind, 16), 16, runs);
+    f.coders[kZstd] = baseline(zstdBaseline(raw, 19));
+    f.coders[kXz] = baseline(xzBaseline(raw, 9));
+    f.coders[kGoalOnPieces] = piecewise(raw, data, data ? d.bits / 8 : 3);
     if (!data) {
       f.tripleEntropy = tripleEntropyBytes(raw);
       f.derive = measure([&] { (void)ref::quantizedGradients(d.volume); }, runs);
@@ -207,18 +217,19 @@ BenchTable lebCoderBench(const BenchOptions& o) {
     for (const ChannelFigures& f : measureDataset(o, d)) {
       const bool data = f.kind == ref::LebChannelKind::Data;
       const std::string channel = data ? "data" : "gradients";
-      const CoderFigure& goal = f.coders[data ? 4 : 3];  // xz -9 for the data, zstd -19 for the gradients
+      const CoderFigure& goal = f.coders[data ? kXz : kZstd];  // the channel's goal coder (goalCoderName)
       nlohmann::json row = {
           {"volume", d.name}, {"channel", channel}, {"raw_bytes", f.rawBytes}, {"coders", nlohmann::json::array()}};
       for (std::size_t i = 0; i < f.coders.size(); ++i) {
         const CoderFigure& c = f.coders[i];
         std::string verdict;
-        if (i == 1 || i == 2) {
+        if (i == kAdaptive12 || i == kAdaptive16) {
           const double against = goal.bytes / c.bytes;  // the coder's ratio over the goal's
           verdict = formatNumber("%.2f", against) + " of " + goalCoderName(data) +
                     "'s ratio: " + (against > 1.0 ? "beats it" : "below it");
-        } else if (i == 5) {  // an anchor, not the goal: the adaptive 2^16 pages against it
-          verdict = "anchor: adaptive 2^16 at " + formatNumber("%.2f", c.bytes / f.coders[2].bytes) + " of its ratio";
+        } else if (i == kGoalOnPieces) {  // an anchor, not the goal: the adaptive 2^16 pages against it
+          verdict = "anchor: adaptive 2^16 at " + formatNumber("%.2f", c.bytes / f.coders[kAdaptive16].bytes) +
+                    " of its ratio";
         }
         t.rows.push_back({d.name, channel, c.coder, ratioText(f.rawBytes / c.bytes),
                           formatNumber("%.1f", f.rawBytes / 1e6 / c.decode.median), verdict});
@@ -280,9 +291,10 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
   for (std::size_t i = 0; i < f[0].coders.size(); ++i) {
     StudyVariant v;
     // Each coder codes both channels, except on pieces: the data's goal coder and the gradients'.
-    v.name = f[0].coders[i].pieceCodec.empty() ? f[0].coders[i].coder
-                                               : f[0].coders[i].pieceCodec + " (data), " + f[1].coders[i].pieceCodec +
-                                                     " (gradients), on pieces of 2^16 samples each on its own";
+    v.name = i != kGoalOnPieces
+                 ? f[0].coders[i].coder
+                 : goalCoderName(true) + " (data), " + goalCoderName(false) + " (gradients), on pieces of 2^" +
+                       std::to_string(kPieceSampleBits) + " samples each on its own";
     v.error = 0.0;
     const Timing& a = f[0].coders[i].decode;
     const Timing& b = f[1].coders[i].decode;
