@@ -149,6 +149,10 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
   if (ref::lebStoresGradients(options)) {  // a stream that derives them needs none
     gradientsFile.emplace(output, out, "gradients");
     gradients = MappedFile::create(gradientsFile->path(), 3 * ref::sampleCount(dims), out);
+    // Written here and read back by the encoder under the window: with the kernel's read-around,
+    // faults on it brought in far more than they touched, faster than the window's looks could
+    // drop (adviseNoReadAround).
+    gradients->adviseNoReadAround();
   }
   ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, gradients ? &*gradients : nullptr}));
   if (gradients) {

@@ -90,6 +90,10 @@ void MappedFile::trim() {
   if (data_) ::madvise(data_, static_cast<std::size_t>(size_), MADV_DONTNEED);
 }
 
+void MappedFile::adviseNoReadAround() {
+  if (data_) ::madvise(data_, static_cast<std::size_t>(size_), MADV_RANDOM);  // advice: no result changes
+}
+
 void MappedFile::flush() {
   if (data_ && writable_ && ::msync(data_, static_cast<std::size_t>(size_), MS_SYNC) != 0)
     throw IoError("cannot write " + path_.string() + ": " + std::strerror(errno));

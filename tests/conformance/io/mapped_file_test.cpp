@@ -1,7 +1,11 @@
 #include "conformance/io/mapped_file.h"
 
+#include <cinttypes>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <memory>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +19,34 @@ constexpr std::uint64_t kMiB = std::uint64_t{1} << 20;
 // Touches every page of `bytes` so that it is resident.
 void touch(std::uint8_t* bytes, std::uint64_t size) {
   for (std::uint64_t i = 0; i < size; i += 4096) bytes[i] = static_cast<std::uint8_t>(i >> 12 | 1);
+}
+
+// The VmFlags of the mapping that holds `address`, from /proc/self/smaps (proc(5)); empty if none.
+std::string vmFlagsOf(const void* address) {
+  std::ifstream smaps("/proc/self/smaps");
+  const auto at = reinterpret_cast<std::uintptr_t>(address);
+  bool inside = false;
+  for (std::string line; std::getline(smaps, line);) {
+    std::uintptr_t begin = 0, end = 0;
+    if (std::sscanf(line.c_str(), "%" SCNxPTR "-%" SCNxPTR " ", &begin, &end) == 2 && line.find('-') < 16) {
+      inside = begin <= at && at < end;
+    } else if (inside && line.rfind("VmFlags:", 0) == 0) {
+      return line + " ";
+    }
+  }
+  return "";
+}
+
+// adviseNoReadAround marks the mapping for random reads (VmFlags "rr": the kernel then reads no
+// pages around a fault), and only it: a new mapping has no such flag.
+TEST(MappedFile, AdviseNoReadAroundMarksTheMappingForRandomReads) {
+  const test::ScratchFolder scratch;
+  MappedFile file = MappedFile::create(scratch / "scratch.bin", 4 * kMiB);
+  const std::string before = vmFlagsOf(file.data());
+  ASSERT_NE(before, "") << "no mapping in /proc/self/smaps holds the file";
+  EXPECT_EQ(before.find(" rr "), std::string::npos) << before;
+  file.adviseNoReadAround();
+  EXPECT_NE(vmFlagsOf(file.data()).find(" rr "), std::string::npos) << vmFlagsOf(file.data());
 }
 
 // The window counts the mappings' pages, not the heap: 64 MiB of freshly written heap must not
