@@ -2,9 +2,7 @@
 
 #include <sys/mman.h>
 
-#include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 
 namespace voxref::ref {
 
@@ -29,20 +27,5 @@ void* allocateHugePageBlock(std::size_t bytes) {
 }
 
 void freeHugePageBlock(void* p, std::size_t bytes) noexcept { munmap(p, mappedBytes(bytes)); }
-
-void* allocateZeroedBlock(std::size_t bytes) {
-  if (bytes >= kHugePageMinBytes) return allocateHugePageBlock(bytes);  // anonymous pages: zero
-  void* p = std::calloc(std::max<std::size_t>(bytes, 1), 1);
-  if (!p) throw std::bad_alloc();
-  return p;
-}
-
-void freeZeroedBlock(void* p, std::size_t bytes) noexcept {
-  if (bytes >= kHugePageMinBytes) {
-    freeHugePageBlock(p, bytes);
-  } else {
-    std::free(p);
-  }
-}
 
 }  // namespace voxref::ref

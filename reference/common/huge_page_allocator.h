@@ -19,13 +19,6 @@ inline constexpr std::size_t kHugePageMinBytes = std::size_t{4} << 20;
 void* allocateHugePageBlock(std::size_t bytes);
 void freeHugePageBlock(void* p, std::size_t bytes) noexcept;
 
-// A block of `bytes` zero bytes, for a table whose empty entry is all zero bytes and much of which
-// a run may never touch (LebReader's memo): from kHugePageMinBytes on, a huge-page block, whose
-// pages the kernel zeroes at their first touch, so nothing is written up front; a smaller one from
-// calloc. Free it with freeZeroedBlock and the same size. Throws std::bad_alloc.
-void* allocateZeroedBlock(std::size_t bytes);
-void freeZeroedBlock(void* p, std::size_t bytes) noexcept;
-
 template <class T>
 struct HugePageAllocator {
   using value_type = T;

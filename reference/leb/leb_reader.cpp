@@ -21,8 +21,7 @@ constexpr int kBrickLog2 = 2;
 LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheBudgetBytes)
     : stream_(std::move(stream)), order_(stream_->grid), cache_(cacheBudgetBytes) {
   constexpr std::uint64_t kMaxAxis = (std::uint64_t{1} << kMaxIndexedLebK) + 1;
-  static_assert(kMaxAxis * kMaxAxis * kMaxAxis < ~std::uint32_t{0},
-                "a grid's linear index plus one fits the memo's key");
+  static_assert(kMaxAxis * kMaxAxis * kMaxAxis < ~std::uint32_t{0}, "a grid's linear index fits the memo's key");
   requireIndexedGrid(stream_->grid, "random access (LebReader)");
   const auto n = static_cast<std::uint64_t>(stream_->grid.pointsPerAxis());
   bricksPerAxis_ = (n + (1u << kBrickLog2) - 1) >> kBrickLog2;
@@ -30,8 +29,7 @@ LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheB
   const std::uint64_t slots =
       std::min<std::uint64_t>(std::max<std::uint64_t>(kMinMemoSlots, std::bit_floor(cacheBudgetBytes / kMemoSlotBytes)),
                               std::bit_ceil(brickedPoints));
-  const std::size_t bytes = static_cast<std::size_t>(slots) * sizeof(MemoSlot);
-  memo_ = std::unique_ptr<MemoSlot[], FreeMemo>(static_cast<MemoSlot*>(allocateZeroedBlock(bytes)), FreeMemo{bytes});
+  memo_.resize(static_cast<std::size_t>(slots));
   memoMask_ = slots - 1;
 }
 
@@ -68,7 +66,7 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   if (!grid.contains(p)) order_.index(p);  // throws, naming the point
   // Keyed by the grid's linear index, which costs no walk of the hierarchy: the hierarchical
   // index is needed only for a point the memo lacks (to find its page).
-  const auto memoKey = static_cast<std::uint32_t>(grid.linearIndex(p) + 1);
+  const auto memoKey = static_cast<std::uint32_t>(grid.linearIndex(p));
   MemoSlot& slot = memoSlot(p);
   Known have;
   if (slot.key == memoKey) {
@@ -115,7 +113,7 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   if (derive) deriveGradient(p, inside, pred, have);
   have.channels |= need;
   // The slot, unless another point of this query holds it (the recursion may have filled it).
-  if (slot.key == memoKey || slot.key == 0 || slot.query != query_) {
+  if (slot.key == memoKey || slot.key == ~std::uint32_t{0} || slot.query != query_) {
     slot = {
         memoKey,
         query_,

@@ -34,11 +34,9 @@
 #include <array>
 #include <cstdint>
 #include <memory>
-#include <type_traits>
 #include <vector>
 
 #include "reference/common/flat_u64_map.h"
-#include "reference/common/huge_page_allocator.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_stream.h"
 #include "reference/leb/page_cache.h"
@@ -90,30 +88,22 @@ class LebReader {
   void deriveGradient(const GridPoint& p, bool inside, const std::array<std::int32_t, 4>& pred, Known& have);
   static unsigned channelBit(LebChannelKind kind) { return kind == LebChannelKind::Data ? 1u : 2u; }
 
-  // A memo slot: the point's linear index plus one (0: empty), the query that wrote it, the data
+  // A memo slot: the point's linear index (all ones: empty), the query that wrote it, the data
   // value and the gradient's components (a gradient is 8 bits: gradients.h), the known channels.
-  // All zero bytes are an empty slot, so the table comes zeroed from the kernel, on huge pages
-  // (allocateZeroedBlock), and is never written whole: a reader is made at once (a 64 MB table
-  // took 33 ms to write), and a query pays only for the slots it reaches (docs/leb.md, "Random
-  // access").
   struct MemoSlot {
-    std::uint32_t key;
-    std::uint32_t query;
-    std::int32_t data;
-    std::array<std::int8_t, 3> gradient;
-    std::uint8_t channels;
+    std::uint32_t key = ~std::uint32_t{0};
+    std::uint32_t query = 0;
+    std::int32_t data = 0;
+    std::array<std::int8_t, 3> gradient{};
+    std::uint8_t channels = 0;
   };
-  static_assert(sizeof(MemoSlot) == kMemoSlotBytes && std::is_trivially_copyable_v<MemoSlot>);
+  static_assert(sizeof(MemoSlot) == kMemoSlotBytes);
   MemoSlot& memoSlot(const GridPoint& p);
-  struct FreeMemo {
-    std::size_t bytes;
-    void operator()(MemoSlot* p) const noexcept { freeZeroedBlock(p, bytes); }
-  };
 
   std::shared_ptr<const LebStream> stream_;
   HzOrder order_;
   PageCache cache_;
-  std::unique_ptr<MemoSlot[], FreeMemo> memo_;
+  std::vector<MemoSlot> memo_;
   std::uint64_t memoMask_ = 0, bricksPerAxis_ = 0;
   std::uint32_t query_ = 0;
   FlatU64Map<Known> queryOwn_;  // this query's points whose slot another of its points holds

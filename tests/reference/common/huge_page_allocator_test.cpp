@@ -28,25 +28,5 @@ TEST(HugePageAllocator, LargeBlocksStartOnAHugePageAndKeepTheirContentsAsTheyGro
   EXPECT_EQ(v.capacity(), 0u);
 }
 
-TEST(HugePageAllocator, ZeroedBlocksAreAllZeroEvenWhereAFreedBlockWasWrittenBefore) {
-  // Each size twice: the first block is filled with a pattern and freed, so the second, which may
-  // reuse its memory (calloc below kHugePageMinBytes, a fresh mapping from it on), must be zeroed
-  // anew. Large blocks start on a huge page.
-  for (const std::size_t bytes : {std::size_t{0}, std::size_t{1}, std::size_t{4096}, kHugePageMinBytes - 1,
-                                  kHugePageMinBytes, 3 * kHugePageMinBytes + 5}) {
-    for (int round = 0; round < 2; ++round) {
-      auto* p = static_cast<unsigned char*>(allocateZeroedBlock(bytes));
-      ASSERT_NE(p, nullptr) << bytes;
-      if (bytes >= kHugePageMinBytes)
-        EXPECT_EQ(reinterpret_cast<std::uintptr_t>(p) % (std::uintptr_t{2} << 20), 0u) << bytes;
-      std::size_t nonZero = 0;
-      for (std::size_t i = 0; i < bytes; ++i) nonZero += p[i] != 0;
-      EXPECT_EQ(nonZero, 0u) << bytes << " bytes, round " << round;
-      for (std::size_t i = 0; i < bytes; ++i) p[i] = 0xAB;
-      freeZeroedBlock(p, bytes);
-    }
-  }
-}
-
 }  // namespace
 }  // namespace voxref::ref
