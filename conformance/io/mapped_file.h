@@ -44,8 +44,8 @@ class MappedFile {
   void flush();
   // Turns off the kernel's read-around for this mapping (madvise MADV_RANDOM): a fault brings in
   // the page it needs and no more. For a scratch file written through its mapping and read back
-  // under a ResidentWindow: with read-around, the 1025^3 buckyball's encode peaked at 1.95-2.52 GB
-  // against a 512 MB window, without it at 0.70-0.76 GB (docs/leb.md, "Streaming between files").
+  // under a ResidentWindow: with read-around, the 1025^3 buckyball's encode peaked at 1.75-2.52 GB
+  // against a 512 MB window, without it at 0.70-0.78 GB (docs/leb.md, "Streaming between files").
   void adviseNoReadAround();
 
  private:
