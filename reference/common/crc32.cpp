@@ -1,4 +1,5 @@
 #include "reference/common/crc32.h"
+#include "reference/common/crc32_paths.h"
 
 #include <array>
 #include <cstddef>

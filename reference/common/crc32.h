@@ -5,7 +5,8 @@
 //
 // Speed: where the CPU multiplies without carries (x86-64's PCLMULQDQ, asked at run time), a
 // message of 64 bytes or more is folded 64 bytes a step (crc32.cpp); otherwise, and for shorter
-// messages, eight bytes a step by tables. Both give the same value.
+// messages, eight bytes a step by tables. Both give the same value (crc32_paths.h names them for
+// the tests).
 #pragma once
 
 #include <cstdint>
@@ -15,15 +16,6 @@ namespace voxref::ref {
 
 std::uint32_t crc32Update(std::uint32_t crc, std::string_view bytes);
 inline std::uint32_t crc32(std::string_view bytes) { return crc32Update(0, bytes); }
-
-// The two ways, for the tests that compare them: slicedUpdate always by tables, foldedUpdate by
-// carry-less multiplication where foldedAvailable() (else as slicedUpdate). crc32Update is
-// foldedUpdate.
-namespace crc32_detail {
-std::uint32_t slicedUpdate(std::uint32_t crc, std::string_view bytes);
-std::uint32_t foldedUpdate(std::uint32_t crc, std::string_view bytes);
-bool foldedAvailable();
-}  // namespace crc32_detail
 
 // Whether the CRC-32 of `bytes` is `stored`. Fuzz builds (FUZZING_BUILD_MODE_UNSAFE_FOR_PRODUCTION,
 // the macro libFuzzer's users agree on) accept every checksum, so that mutated inputs reach the

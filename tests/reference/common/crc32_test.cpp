@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "reference/common/crc32_paths.h"
+
 namespace voxref::ref {
 namespace {
 
