@@ -74,7 +74,9 @@ std::uint64_t fileResidentBytes();
 // gradients within one batch: the 1025^3 buckyball encode peaked at 3.29 GB before this thread, 2.12 GB polling every 5
 // ms, 1.95 GB every 1 ms, against a 512 MB window); calling it between batches looks once more. Trimming drops pages
 // from this process's page tables only (MADV_DONTNEED on shared file mappings: written pages stay in the file's page
-// cache), so it changes no result, whichever thread is reading or writing the mapping. The mappings must outlive the
+// cache), so it changes no result, whichever thread is reading or writing the mapping. statm's counts are per-CPU
+// counters that the kernel sums lazily, so the window sees pages late by their lag (up to 30 MiB for a few
+// milliseconds on Linux 6.18, 2 CPUs: tests/conformance/io/mapped_file_test.cpp). The mappings must outlive the
 // window.
 inline constexpr int kResidentWindowPollMs = 1;
 class ResidentWindow {
