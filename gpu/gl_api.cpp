@@ -89,6 +89,11 @@ GlApi loadGlApi(const GetProcAddress& get) {
   load(get, gl.GetQueryObjectuiv, "glGetQueryObjectuiv");
   load(get, gl.ClearBufferfv, "glClearBufferfv");
   load(get, gl.ClearBufferuiv, "glClearBufferuiv");
+  load(get, gl.CullFace, "glCullFace");
+  load(get, gl.FrontFace, "glFrontFace");
+  load(get, gl.BindBufferBase, "glBindBufferBase");
+  load(get, gl.GetBufferSubData, "glGetBufferSubData");
+  gl.MemoryBarrier = reinterpret_cast<PFNGLMEMORYBARRIERPROC>(get("glMemoryBarrier"));
   return gl;
 }
 

@@ -94,6 +94,13 @@ struct GlApi {
   PFNGLGETQUERYOBJECTUIVPROC GetQueryObjectuiv = nullptr;
   PFNGLCLEARBUFFERFVPROC ClearBufferfv = nullptr;
   PFNGLCLEARBUFFERUIVPROC ClearBufferuiv = nullptr;
+  PFNGLCULLFACEPROC CullFace = nullptr;
+  PFNGLFRONTFACEPROC FrontFace = nullptr;
+  // Counting samples in a shader storage buffer (GL 4.3; gpu/iso_gl.h, SampleCounter::Buffer).
+  // MemoryBarrier is GL 4.2: null where the context does not provide it, and the counter refuses.
+  PFNGLBINDBUFFERBASEPROC BindBufferBase = nullptr;
+  PFNGLGETBUFFERSUBDATAPROC GetBufferSubData = nullptr;
+  PFNGLMEMORYBARRIERPROC MemoryBarrier = nullptr;
 };
 
 // Throws GlUnavailable (gl_error.h) naming the first entry point the context does not provide.

@@ -149,7 +149,10 @@ std::string infoLog(GLuint object, GetIv getIv, GetLog getLog) {
 
 GLuint compile(const GlApi& gl, GLenum stage, int glslNumber, std::string_view source, std::string_view sourceName,
                std::string_view library = {}) {
-  const std::string version = glslNumber >= 450 ? "450 core" : glslNumber >= 400 ? "400 core" : "330 core";
+  const std::string version = glslNumber >= 450   ? "450 core"
+                              : glslNumber >= 430 ? "430 core"
+                              : glslNumber >= 400 ? "400 core"
+                                                  : "330 core";
   const std::string prelude = "#version " + version + "\n#define PRECISE " + (glslNumber >= 400 ? "precise" : "") +
                               "\n" + std::string(library) + "\n#line 1\n";
   const std::string full = prelude + std::string(source);

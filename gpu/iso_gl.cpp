@@ -96,6 +96,7 @@ class GrowingBuffer {
     }
     if (bytes > 0) gl_->BufferSubData(target_, 0, static_cast<GLsizeiptr>(bytes), data);
   }
+  GLuint id() const { return handle_.id(); }
 
  private:
   const GlApi* gl_;
@@ -123,7 +124,7 @@ void clearTarget(const GlApi& gl) {
   gl.Disable(GL_BLEND);
 }
 
-// The 12 triangles of a box, as 36 vertices.
+// The 12 triangles of a box, as 36 vertices, each face wound clockwise seen from outside the box.
 void appendBox(const QueryBox& b, std::vector<float>& out) {
   static constexpr int kFaces[6][4] = {{0, 2, 6, 4}, {1, 5, 7, 3}, {0, 4, 5, 1},
                                        {2, 3, 7, 6}, {0, 1, 3, 2}, {4, 6, 7, 5}};
@@ -142,7 +143,9 @@ void appendBox(const QueryBox& b, std::vector<float>& out) {
 using namespace iso_gl_parts;
 
 // The mesh program with the mesh's vertex array (positions at 0, normals at 1, the indices), and
-// the box program with the boxes' vertex array (positions at 0), made when first needed.
+// for the occlusion tests the depth-only program (the mesh's depth and the query boxes), the
+// counting program and buffer, and the boxes' vertex array (positions at 0); programs are made
+// when first needed.
 struct IsoMeshRenderer::State {
   State(Context& c, std::string_view fragmentSource)
       : context(c),
@@ -154,7 +157,8 @@ struct IsoMeshRenderer::State {
         normals(gl, GL_ARRAY_BUFFER),
         indices(gl, GL_ELEMENT_ARRAY_BUFFER),
         boxVao(gl),
-        boxVertices(gl, GL_ARRAY_BUFFER) {
+        boxVertices(gl, GL_ARRAY_BUFFER),
+        counts(gl, GL_SHADER_STORAGE_BUFFER) {
     // Attribute `index` of the bound vertex array reads vec3s from `b`. An attribute's source is
     // vertex-array state, taken from the buffer bound at the call, and so is the element buffer's
     // binding; the buffers keep their names when their storage grows.
@@ -194,6 +198,64 @@ struct IsoMeshRenderer::State {
     checkGl(gl, "drawing the isosurface mesh");
   }
 
+  // The samples of the first `boxes` boxes in the box buffer, a query and a draw each.
+  std::vector<std::uint32_t> countByQueries(std::size_t boxes, const ref::ViewCamera& camera) {
+    useWithCamera(depthOnly(), camera);
+    std::vector<GLuint> queries(boxes, 0);
+    if (boxes > 0) gl.GenQueries(static_cast<GLsizei>(boxes), queries.data());
+    for (std::size_t i = 0; i < boxes; ++i) {
+      gl.BeginQuery(GL_SAMPLES_PASSED, queries[i]);
+      gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(36 * i), 36);
+      gl.EndQuery(GL_SAMPLES_PASSED);
+    }
+    std::vector<std::uint32_t> out(boxes, 0);
+    for (std::size_t i = 0; i < boxes; ++i) gl.GetQueryObjectuiv(queries[i], GL_QUERY_RESULT, &out[i]);
+    if (boxes > 0) gl.DeleteQueries(static_cast<GLsizei>(boxes), queries.data());
+    return out;
+  }
+
+  // The same counts from one draw of all of them, into a storage buffer (occlusion_count.frag).
+  std::vector<std::uint32_t> countInBuffer(std::size_t boxes, const ref::ViewCamera& camera) {
+    if (!countProgram)
+      countProgram.emplace(gl, context.info().glslNumber, shaders::kOcclusionCountVert, shaders::kOcclusionCountFrag,
+                           "occlusion_count.frag");
+    std::vector<std::uint32_t> out(boxes, 0);
+    if (boxes == 0) return out;
+    useWithCamera(*countProgram, camera);
+    counts.write(out.data(), boxes * sizeof(std::uint32_t));  // zeros
+    gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counts.id());
+    gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(36 * boxes));
+    // GL 4.6 section 7.13.2: buffer reads after shader writes need the buffer-update barrier.
+    gl.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl.GetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(boxes * sizeof(std::uint32_t)),
+                        out.data());
+    return out;
+  }
+
+  // The mesh's depth alone, for the occlusion tests: the mesh's vertex shader with a fragment
+  // shader that computes nothing (the colour masks are off), cheaper to draw than the shaded mesh
+  // (docs/iso.md, "Occlusion tests in one draw").
+  void drawMeshDepth(const ref::ViewCamera& camera) {
+    useWithCamera(depthOnly(), camera);
+    meshVao.bind();
+    if (indexCount > 0) gl.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
+    checkGl(gl, "drawing the isosurface mesh's depth");
+  }
+
+  // The mesh's vertex shader with occlusion_box.frag: writes depth alone when the colour masks are off.
+  const Program& depthOnly() {
+    if (!depthOnlyProgram)
+      depthOnlyProgram.emplace(gl, context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag,
+                               "occlusion_box.frag");
+    return *depthOnlyProgram;
+  }
+
+  void useWithCamera(const Program& program, const ref::ViewCamera& camera) const {
+    program.use();
+    const glm::mat4 mvp = mvpOf(camera);
+    gl.UniformMatrix4fv(program.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+  }
+
   Context& context;
   const GlApi& gl;
   Program meshProgram;
@@ -202,7 +264,8 @@ struct IsoMeshRenderer::State {
   GLsizei indexCount = 0;
   VertexArray boxVao;
   GrowingBuffer boxVertices;
-  std::optional<Program> boxProgram;
+  std::optional<Program> depthOnlyProgram, countProgram;
+  GrowingBuffer counts;
   std::optional<IsoTarget> target;
 };
 
@@ -233,56 +296,46 @@ IsoImageGl IsoMeshRenderer::render(const ref::ViewCamera& camera) {
 }
 
 std::vector<std::uint32_t> IsoMeshRenderer::occlusionQueries(const std::vector<QueryBox>& boxes,
-                                                             const ref::ViewCamera& camera) {
+                                                             const ref::ViewCamera& camera, SampleCounter counter) {
   State& s = *state_;
   const GlApi& gl = s.gl;
+  if (const std::string p = sampleCounterProblem(s.context, counter); !p.empty()) throw GlUnsupported(p);
+  // The boxes that can be tested, in order: a box reaching the near plane would be clipped, so it
+  // is not tested and counts as visible.
   const ref::CameraBasis basis = ref::cameraBasis(camera);
-  s.targetFor(camera);
-  clearTarget(gl);
-  gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-  s.drawMesh(camera);
-
-  std::vector<float> vertices;
-  vertices.reserve(boxes.size() * 36 * 3);
-  for (const QueryBox& b : boxes) appendBox(b, vertices);
-  s.boxVao.bind();
-  s.boxVertices.write(vertices.data(), vertices.size() * sizeof(float));
-  if (!s.boxProgram)
-    s.boxProgram.emplace(gl, s.context.info().glslNumber, shaders::kIsoMeshVert, shaders::kOcclusionBoxFrag,
-                         "occlusion_box.frag");
-  const Program& program = *s.boxProgram;
-  program.use();
-  const glm::mat4 mvp = mvpOf(camera);
-  gl.UniformMatrix4fv(program.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
-  gl.DepthMask(GL_FALSE);
-  gl.DepthFunc(GL_LEQUAL);
-  std::vector<std::uint32_t> samples(boxes.size(), kNotTested);
-  std::vector<GLuint> queries(boxes.size(), 0);
-  std::vector<bool> begun(boxes.size(), false);
-  if (!boxes.empty()) gl.GenQueries(static_cast<GLsizei>(queries.size()), queries.data());
+  std::vector<std::size_t> tested;
   for (std::size_t i = 0; i < boxes.size(); ++i) {
-    // A box reaching the near plane would be clipped: not testable, so visible.
     double nearest = 1e300;
     for (int c = 0; c < 8; ++c) {
       const glm::dvec3 p((c & 1) ? boxes[i].hi[0] : boxes[i].lo[0], (c & 2) ? boxes[i].hi[1] : boxes[i].lo[1],
                          (c & 4) ? boxes[i].hi[2] : boxes[i].lo[2]);
       nearest = std::min(nearest, glm::dot(p - camera.eye, basis.forward));
     }
-    if (nearest <= camera.nearPlane) continue;
-    begun[i] = true;
-    gl.BeginQuery(GL_SAMPLES_PASSED, queries[i]);
-    gl.DrawArrays(GL_TRIANGLES, static_cast<GLint>(36 * i), 36);
-    gl.EndQuery(GL_SAMPLES_PASSED);
+    if (nearest > camera.nearPlane) tested.push_back(i);
   }
-  for (std::size_t i = 0; i < boxes.size(); ++i) {
-    if (!begun[i]) continue;  // GL 4.6 section 4.2: a name never begun is not a query object
-    GLuint n = 0;
-    gl.GetQueryObjectuiv(queries[i], GL_QUERY_RESULT, &n);
-    samples[i] = n;
-  }
-  if (!boxes.empty()) gl.DeleteQueries(static_cast<GLsizei>(queries.size()), queries.data());
-  checkGl(gl, "occlusion queries");
+  s.targetFor(camera);
+  clearTarget(gl);
+  gl.ColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  s.drawMeshDepth(camera);
+
+  std::vector<float> vertices;
+  vertices.reserve(tested.size() * 36 * 3);
+  for (std::size_t i : tested) appendBox(boxes[i], vertices);
+  s.boxVao.bind();
+  s.boxVertices.write(vertices.data(), vertices.size() * sizeof(float));
+  gl.DepthMask(GL_FALSE);
+  gl.DepthFunc(GL_LEQUAL);
+  gl.Enable(GL_CULL_FACE);  // appendBox winds every face clockwise seen from outside
+  gl.CullFace(GL_BACK);
+  gl.FrontFace(GL_CW);
+  const std::vector<std::uint32_t> counts = counter == SampleCounter::Queries ? s.countByQueries(tested.size(), camera)
+                                                                              : s.countInBuffer(tested.size(), camera);
+  gl.Disable(GL_CULL_FACE);
+  gl.FrontFace(GL_CCW);
   gl.DepthMask(GL_TRUE);
+  checkGl(gl, "occlusion tests");
+  std::vector<std::uint32_t> samples(boxes.size(), kNotTested);
+  for (std::size_t t = 0; t < tested.size(); ++t) samples[tested[t]] = counts[t];
   return samples;
 }
 
@@ -293,10 +346,22 @@ IsoImageGl renderIsoMeshGl(Context& context, const ref::IsoMesh& mesh, const ref
 }
 
 std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
-                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera) {
+                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera,
+                                              SampleCounter counter) {
   IsoMeshRenderer renderer(context);
   renderer.load(occluder);
-  return renderer.occlusionQueries(boxes, camera);
+  return renderer.occlusionQueries(boxes, camera, counter);
+}
+
+std::string_view name(SampleCounter counter) { return counter == SampleCounter::Queries ? "queries" : "buffer"; }
+
+std::string sampleCounterProblem(const Context& context, SampleCounter counter) {
+  if (counter == SampleCounter::Queries) return "";
+  if (context.info().glslNumber < 430)
+    return "counting samples in a buffer needs GLSL 4.30 (storage buffers, early fragment tests); the context has " +
+           context.info().glslVersion;
+  if (!context.gl().MemoryBarrier) return "counting samples in a buffer needs glMemoryBarrier, which the context lacks";
+  return "";
 }
 
 PrimitiveIdCheck checkPrimitiveIdGl(Context& context) {

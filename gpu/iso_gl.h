@@ -10,6 +10,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -49,13 +50,29 @@ struct QueryBox {
   std::array<double, 3> lo, hi;  // grid coordinates
 };
 
-// For every box, the samples that pass GL_LEQUAL against the depth of `occluder` (rendered first,
-// depth only) from `camera`: GL_SAMPLES_PASSED, one query per box. A box whose extent reaches
-// within the near plane of the eye cannot be tested (it would be clipped): its count is reported
-// as kNotTested and the caller must treat it as visible.
+// How GL counts a box's samples. Both give the same numbers by the GL and GLSL specifications
+// (occlusion_count.frag says why); the conformance case iso.counters compares them count for count.
+enum class SampleCounter {
+  Queries,  // GL_SAMPLES_PASSED: a query object and a draw per box, as the paper tests its boxes
+  Buffer,   // every box in one draw; a fragment shader run after the depth test (early fragment
+            // tests) adds one to its box's counter in a shader storage buffer. Needs GLSL 4.30
+            // and glMemoryBarrier: GlUnsupported on contexts without them (softpipe's 3.30).
+};
+std::string_view name(SampleCounter counter);  // "queries", "buffer"
+// Why `context` cannot count with `counter`; empty when it can.
+std::string sampleCounterProblem(const Context& context, SampleCounter counter);
+
+// For every box, the samples of its front faces (those facing the eye; back faces are culled)
+// that pass GL_LEQUAL against the depth of `occluder` (rendered first, depth only) from `camera`,
+// counted by `counter`. A box has samples exactly when it would have with its back faces drawn:
+// every pixel the box covers is covered by a front face, no farther than the back face there.
+// A box whose extent reaches within the near plane of the eye cannot be tested (it would be
+// clipped): its count is reported as kNotTested and the caller must treat it as visible.
+// Throws GlUnsupported as sampleCounterProblem says.
 inline constexpr std::uint32_t kNotTested = 0xffffffffu;
 std::vector<std::uint32_t> occlusionQueriesGl(Context& context, const ref::IsoMesh& occluder,
-                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera);
+                                              const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera,
+                                              SampleCounter counter = SampleCounter::Queries);
 
 // The renderer of a frame loop: its programs, vertex arrays, buffers and target are kept from one
 // call to the next. A loaded mesh stays in the buffers until the next load, so the frame after
@@ -80,7 +97,8 @@ class IsoMeshRenderer {
   // exceeds GL_MAX_RENDERBUFFER_SIZE.
   IsoImageGl render(const ref::ViewCamera& camera);
   // occlusionQueriesGl with the loaded mesh as occluder.
-  std::vector<std::uint32_t> occlusionQueries(const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera);
+  std::vector<std::uint32_t> occlusionQueries(const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera,
+                                              SampleCounter counter = SampleCounter::Queries);
 
  private:
   struct State;

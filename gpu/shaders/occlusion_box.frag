@@ -1,4 +1,5 @@
-// Occlusion-query boxes write nothing (colour and depth masks are off); the query counts samples.
+// Writes nothing the occlusion tests keep (the colour masks are off): the occluder's depth pass,
+// and the query boxes (depth mask off too), whose samples the queries count.
 layout(location = 0) out vec4 fragColor;
 layout(location = 1) out uint primitiveId;
 void main() {

@@ -149,6 +149,24 @@ OracleResult occlusionOracle(const FramesTally& t, bool cullEveryTested) {
           Judge::IsoGeometry};
 }
 
+// Every occlusion test of every frame counted by GL's two counters (gpu/iso_gl.h, SampleCounter),
+// which the GL and GLSL specifications make equal box for box; not run where the context lacks the
+// buffer counter (`problem`).
+OracleResult sampleCountersOracle(const std::vector<IsoFrame>& frames, const std::string& problem) {
+  if (!problem.empty()) return {"sample_counters", Verdict::NotRun, problem, {}, Judge::GlBehaviour};
+  SampleCountComparison all;
+  for (const IsoFrame& f : frames) accumulate(all, f.counters);
+  return {"sample_counters",
+          all.differing == 0 ? Verdict::Pass : Verdict::Fail,
+          std::to_string(all.differing) + " of " + std::to_string(all.boxes) +
+              " occlusion tests counted differently by GL_SAMPLES_PASSED queries and by a storage buffer after "
+              "early fragment tests (" +
+              std::to_string(all.verdictsDiffering) + " of them hidden by one count, visible by the other)" +
+              (all.first.empty() ? "" : "; first: " + all.first),
+          {{"tests", all.boxes}, {"differing", all.differing}, {"verdicts_differing", all.verdictsDiffering}},
+          Judge::GlBehaviour};
+}
+
 // GL draws each frame's mesh as Embree sees it (mesh_image_compare.h); `driverNote` names a driver
 // finding that explains missing pixels.
 OracleResult meshImageOracle(const FramesTally& t, const std::string& driverNote) {
@@ -180,6 +198,8 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
   IsoRunOptions options;
   options.keepImages = true;
   options.threads = ctx.threads();
+  const std::string noBufferCounter = gpu::sampleCounterProblem(*ctx.gl(), gpu::SampleCounter::Buffer);
+  options.compareCounters = noBufferCounter.empty();
   const auto t0 = Clock::now();
   const std::vector<IsoFrame> frames = runIsoFrames(*ctx.gl(), scene, options);
   r.secondsGl = secondsSince(t0);
@@ -201,7 +221,8 @@ CaseResult judgeFrames(CaseContext& ctx, const std::string& id, const std::strin
                                      ? " (the driver draws no fragment of a shader reading gl_PrimitiveID: finding " +
                                            std::string(kPrimitiveIdFinding) + ")"
                                      : "";
-  r.oracles = {occlusionOracle(t, scene.cullEveryTested), meshImageOracle(t, driverNote)};
+  r.oracles = {occlusionOracle(t, scene.cullEveryTested), meshImageOracle(t, driverNote),
+               sampleCountersOracle(frames, noBufferCounter)};
   if (expectEmpty)
     r.oracles.push_back({"empty",
                          t.triangles == 0 ? Verdict::Pass : Verdict::Fail,

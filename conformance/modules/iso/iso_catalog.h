@@ -4,6 +4,8 @@
 //                                     frame's mesh) sees was culled; efficiency reported;
 //                         mesh_image  GL's image of each frame's mesh against Embree's image of the
 //                                     same mesh, under the derived bound of mesh_image_compare.h;
+//                         sample_counters  every occlusion test counted by GL_SAMPLES_PASSED queries
+//                                     and by a storage buffer (gpu/iso_gl.h), equal box for box;
 //   iso.accuracy.<scene>  the extracted surface against the exact isosurface of the trilinear field
 //                         (Embree), per error threshold: depth error, silhouette difference,
 //                         triangles and extraction time: what accuracy costs (information);

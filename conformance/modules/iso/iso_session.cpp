@@ -87,10 +87,20 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
 
     std::unordered_set<std::uint64_t> culled;  // diamonds (linear index) culled this frame
     auto isCulled = [&](const ref::GridPoint& d) { return culled.count(grid.linearIndex(d)) != 0; };
+    double secondsComparing = 0;  // the other counter's, left out of the frame's timings
     auto queryDiamonds = [&](const std::vector<ref::GridPoint>& diamonds) {  // against the renderer's mesh
       std::vector<gpu::QueryBox> boxes;
       for (const ref::GridPoint& d : diamonds) boxes.push_back(queryBox(grid, d, dims));
-      return renderer.occlusionQueries(boxes, fr.camera);
+      std::vector<std::uint32_t> samples = renderer.occlusionQueries(boxes, fr.camera, options.counter);
+      if (options.compareCounters) {
+        const auto t = Clock::now();
+        const bool byQueries = options.counter == gpu::SampleCounter::Queries;
+        const std::vector<std::uint32_t> other = renderer.occlusionQueries(
+            boxes, fr.camera, byQueries ? gpu::SampleCounter::Buffer : gpu::SampleCounter::Queries);
+        accumulate(fr.counters, byQueries ? compareSampleCounts(samples, other) : compareSampleCounts(other, samples));
+        secondsComparing += secondsSince(t);
+      }
+      return samples;
     };
     auto refineAndExtract = [&] {
       auto t = Clock::now();
@@ -131,7 +141,8 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
       }
     }
     fr.occlusionTests = tested.size();
-    fr.secondsQueries = secondsSince(t0);
+    fr.secondsQueries = secondsSince(t0) - secondsComparing;
+    secondsComparing = 0;
 
     // 2. Refinement; 3. extraction.
     refineAndExtract();
@@ -151,7 +162,7 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
           visibleAt[grid.linearIndex(suspects[i])] = f;
           ++fr.revokedCulls;
         }
-      fr.secondsQueries += secondsSince(t0);
+      fr.secondsQueries += secondsSince(t0) - secondsComparing;
       if (fr.revokedCulls > 0) refineAndExtract();
     }
     fr.culled = culled.size();

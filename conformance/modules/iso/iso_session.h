@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "conformance/modules/iso/iso_scene.h"
+#include "conformance/modules/iso/sample_count_compare.h"
 #include "fixtures/raycast/ray_image.h"
 #include "gpu/context.h"
 #include "gpu/iso_gl.h"
@@ -45,6 +46,7 @@ struct IsoFrame {
   std::size_t culledInvisible = 0;
   std::size_t visibleDiamonds = 0, triangles = 0, leafTetrahedra = 0;
   std::uint64_t pagesDecoded = 0;  // cumulative
+  SampleCountComparison counters;  // IsoRunOptions::compareCounters: the tests counted both ways
   double secondsQueries = 0, secondsRefine = 0, secondsExtract = 0, secondsGl = 0, secondsEmbree = 0;
   ref::IsoMesh mesh;
   gpu::IsoImageGl gl;
@@ -55,6 +57,10 @@ struct IsoRunOptions {
   bool keepImages = false;  // keep mesh and images of every frame (else only of the last)
   int threads = 0;
   std::function<void(int)> progress;
+  gpu::SampleCounter counter = gpu::SampleCounter::Queries;  // how the occlusion tests count samples
+  // Every occlusion test counted by the other counter as well, outside the frame's timings, and the
+  // two compared (IsoFrame::counters). Throws GlUnsupported where the context lacks the buffer counter.
+  bool compareCounters = false;
 };
 
 // Throws what the layers throw (GL errors, Embree errors, invalid scenes).
