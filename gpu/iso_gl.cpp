@@ -221,6 +221,12 @@ struct IsoMeshRenderer::State {
                            "occlusion_count.frag");
     std::vector<std::uint32_t> out(boxes, 0);
     if (boxes == 0) return out;
+    GLint maxBlock = 0;
+    gl.GetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    if (static_cast<std::uint64_t>(boxes) * sizeof(std::uint32_t) > static_cast<std::uint64_t>(maxBlock))
+      throw GlUnsupported("counting " + std::to_string(boxes) + " boxes in a buffer needs " +
+                          std::to_string(boxes * sizeof(std::uint32_t)) +
+                          " bytes of storage block; GL_MAX_SHADER_STORAGE_BLOCK_SIZE is " + std::to_string(maxBlock));
     useWithCamera(*countProgram, camera);
     counts.write(out.data(), boxes * sizeof(std::uint32_t));  // zeros
     gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, counts.id());

@@ -56,7 +56,8 @@ enum class SampleCounter {
   Queries,  // GL_SAMPLES_PASSED: a query object and a draw per box, as the paper tests its boxes
   Buffer,   // every box in one draw; a fragment shader run after the depth test (early fragment
             // tests) adds one to its box's counter in a shader storage buffer. Needs GLSL 4.30
-            // and glMemoryBarrier: GlUnsupported on contexts without them (softpipe's 3.30).
+            // and glMemoryBarrier: GlUnsupported on contexts without them (softpipe's 3.30), and
+            // for more boxes than GL_MAX_SHADER_STORAGE_BLOCK_SIZE / 4 (4 M at GL 4.3's least).
 };
 std::string_view name(SampleCounter counter);  // "queries", "buffer"
 // Why `context` cannot count with `counter`; empty when it can.

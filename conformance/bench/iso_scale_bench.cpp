@@ -6,8 +6,9 @@
 //   2. the LEB stream with gradients, from that file;
 //   3. the tiered diamond bounds (reference/iso/tiered_bounds.h) from a mapping of the volume;
 //   4. the frames of an orbit from the stream (pages decoded on demand) with those bounds, without
-//      and with the paper's occlusion culling (GL occlusion queries), each frame drawn with GL and
-//      its ground truth ray cast with Embree (conformance/modules/iso/iso_session.h).
+//      and with the paper's occlusion culling (GL occlusion queries, then the same boxes counted in
+//      one draw: gpu/iso_gl.h), each frame drawn with GL and its ground truth ray cast with Embree
+//      (conformance/modules/iso/iso_session.h).
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -72,7 +73,7 @@ BenchTable isoScaleBench(const BenchOptions& o, gpu::Context& gl) {
   io::ensureDirectory(dir);
   const std::string name = "buckyball_" + ref::dimsText(dims);
   const std::filesystem::path raw = dir / (name + ".raw"), streamPath = dir / (name + ".vxleb");
-  Progress progress("voxref bench iso.scale", 5);
+  Progress progress("voxref bench iso.scale", 6);
   std::vector<Step> steps;
 
   progress.update(0, "volume");
@@ -120,10 +121,25 @@ BenchTable isoScaleBench(const BenchOptions& o, gpu::Context& gl) {
                       formatNumber("%.3f", s.peakBytes / kGoalBytes), "", "", "", "", "", ""});
     t.data["rows"].push_back({{"step", s.name}, {"seconds", s.seconds}, {"peak_resident_bytes", s.peakBytes}});
   }
-  for (const bool culling : {false, true}) {
-    progress.update(culling ? 4 : 3, culling ? "frames, paper culling" : "frames, no culling");
+  struct Frames {
+    bool culling;
+    gpu::SampleCounter counter;
+    const char* name;
+  };
+  const std::string noBufferCounter = gpu::sampleCounterProblem(gl, gpu::SampleCounter::Buffer);
+  int step = 3;
+  for (const Frames& mode : {Frames{false, gpu::SampleCounter::Queries, "no culling"},
+                             Frames{true, gpu::SampleCounter::Queries, "paper culling"},
+                             Frames{true, gpu::SampleCounter::Buffer, "paper culling, counted in one draw"}}) {
+    progress.update(step++, std::string("frames, ") + mode.name);
+    const std::string label = std::string("frames: ") + std::to_string(scene.path.frames) + " of an orbit at " +
+                              std::to_string(scene.camera.width) + "^2, " + mode.name;
+    if (mode.counter == gpu::SampleCounter::Buffer && !noBufferCounter.empty()) {
+      t.rows.push_back({label, "not run: " + noBufferCounter, "", "", "", "", "", "", "", ""});
+      continue;
+    }
     IsoScene run = scene;
-    run.occlusionCulling = culling;
+    run.occlusionCulling = mode.culling;
     resetPeakResident();
     t0 = Clock::now();
     auto file = std::make_shared<io::LebFile>(io::openLebFile(streamPath));
@@ -131,11 +147,10 @@ BenchTable isoScaleBench(const BenchOptions& o, gpu::Context& gl) {
     const ref::TieredDiamondBounds bounds(coarse, field);
     IsoRunOptions options;
     options.threads = o.threads;
+    options.counter = mode.counter;
     const std::vector<IsoFrame> frames = runIsoFrames(gl, run, field, bounds, options);
     const double seconds = secondsSince(t0), peak = peakResidentBytes();
     const IsoFrameAverages a = averageIsoFrames(frames);
-    const std::string label = std::string("frames: ") + std::to_string(run.path.frames) + " of an orbit at " +
-                              std::to_string(run.camera.width) + "^2, " + (culling ? "paper culling" : "no culling");
     t.rows.push_back({label, formatNumber("%.1f", seconds), bytesText(peak), formatNumber("%.3f", peak / kGoalBytes),
                       formatNumber("%.3f s (", a.frameSeconds) + formatNumber("%.3f / ", a.queries) +
                           formatNumber("%.3f / ", a.refine) + formatNumber("%.3f / ", a.extract) +
@@ -143,6 +158,7 @@ BenchTable isoScaleBench(const BenchOptions& o, gpu::Context& gl) {
                       formatNumber("%.0f", a.triangles), formatNumber("%.0f", a.culled), std::to_string(a.falseCulls),
                       std::to_string(frames.empty() ? 0 : frames.back().pagesDecoded), formatNumber("%.3f", a.embree)});
     t.data["rows"].push_back({{"step", label},
+                              {"sample_counter", gpu::name(mode.counter)},
                               {"seconds", seconds},
                               {"peak_resident_bytes", peak},
                               {"frame_seconds", a.frameSeconds},
@@ -172,7 +188,8 @@ BenchTable isoScaleBench(const BenchOptions& o, gpu::Context& gl) {
       bytesText(static_cast<double>(kPageCacheBytes)) +
       " page cache; frame time = occlusion queries + refinement + extraction + GL drawing (llvmpipe), the Embree "
       "ground truth of each frame (which judges the culls: false culls are culled diamonds the Embree item buffer "
-      "shows visible) apart. Stream " +
+      "shows visible) apart. 'counted in one draw': the paper's culling with each frame's boxes counted in a storage "
+      "buffer in one draw instead of a query and a draw each (gpu/iso_gl.h, SampleCounter). Stream " +
       bytesText(streamBytes) + ". " + (o.quick ? "Quick mode: 65^3, 2 frames at 64^2." : "");
   return t;
 }
