@@ -97,7 +97,9 @@ std::vector<IsoFrame> runIsoFrames(gpu::Context& gl, const IsoScene& scene, ref:
         const bool byQueries = options.counter == gpu::SampleCounter::Queries;
         const std::vector<std::uint32_t> other = renderer.occlusionQueries(
             boxes, fr.camera, byQueries ? gpu::SampleCounter::Buffer : gpu::SampleCounter::Queries);
-        accumulate(fr.counters, byQueries ? compareSampleCounts(samples, other) : compareSampleCounts(other, samples));
+        SampleCountComparison c = byQueries ? compareSampleCounts(samples, other) : compareSampleCounts(other, samples);
+        if (!c.first.empty()) c.first = "frame " + std::to_string(f) + ", " + c.first;
+        accumulate(fr.counters, c);
         secondsComparing += secondsSince(t);
       }
       return samples;
