@@ -26,6 +26,8 @@
 namespace voxref::conf {
 namespace {
 
+constexpr const char* kEngineFile = "engine_256x256x128_uint8.raw.gz";
+
 // The data sets of Table 2: engine (isovalue 85, as the paper), hydrogen atom, the buckyball.
 std::vector<IsoScene> benchScenes(const BenchOptions& o) {
   IsoScene base = builtInIsoScenes().front();
@@ -42,7 +44,7 @@ std::vector<IsoScene> benchScenes(const BenchOptions& o) {
   std::vector<IsoScene> scenes;
   if (!o.quick) {
     IsoScene engine = at("engine 256x256x128", {256, 256, 128}, 85.0);
-    engine.volumeFile = benchVolumes(o) / "engine_256x256x128_uint8.raw.gz";
+    engine.volumeFile = benchVolumes(o) / kEngineFile;
     IsoScene hydrogen = at("hydrogen_atom 128^3", {128, 128, 128}, 20.0);
     hydrogen.volumeFile = benchVolumes(o) / "hydrogen_atom_128x128x128_uint8.raw.gz";
     scenes.push_back(engine);
@@ -153,7 +155,7 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
                "triangles",
                "uncompressed",
                "compressed (cold page cache)",
-               "compressed / uncompressed (issue 18: within 1.3)",
+               "compressed / uncompressed (issue 18: within 1.3 on the engine)",
                "pages decoded",
                "Embree mesh rays/s (1 thread)",
                "Embree mesh rays/s (all)",
@@ -184,7 +186,9 @@ BenchTable extraction(const BenchOptions& o, const std::vector<IsoScene>& scenes
     const Timing mAll = measure([&] { fx::castMesh(mesh, camera, o.threads); });
     const Timing exact = measure([&] { fx::castTrilinearIsosurface(volume, s.isovalue, camera, o.threads); });
     t.rows.push_back({s.name, std::to_string(mesh.triangleCount()), formatSeconds(un), formatSeconds(co),
-                      formatNumber("%.3f", ratio) + (ratio <= kFirstMeshGoal ? " (within)" : " (over)"),
+                      formatNumber("%.3f", ratio) + (s.volumeFile.filename() != kEngineFile ? ""
+                                                     : ratio <= kFirstMeshGoal              ? " (within)"
+                                                                                            : " (over)"),
                       std::to_string(pages) + " of " + std::to_string(2 * stream->pageCount()),
                       formatNumber("%.0f", rays / m1.median), formatNumber("%.0f", rays / mAll.median),
                       formatNumber("%.0f", rays / exact.median)});
