@@ -8,6 +8,8 @@
 // --expect-status ID=STATUS: the case ran and has that status (crash, timeout, ...); the
 //   incomplete-run and crash checks then apply to the other cases only.
 // --expect-stderr ID=TEXT: the case's kept stdout/stderr contains TEXT.
+// --expect-oracle ID:ORACLE=VERDICT: the case ran and its oracle ORACLE gave that verdict (pass,
+//   fail, not_run, ...): an oracle that must have judged, or must have said why it could not.
 // --expect-interrupted: the run is marked incomplete, names its signal, lists the cases not run,
 //   and every listed case ran to a status.
 // --same-results-as OTHER.json: every case has the same status, message, oracles, effects,
@@ -84,7 +86,7 @@ int main(int argc, char** argv) {
   bool exactPass = false, noFail = false, explained = false;
   std::vector<std::string> findings;
   std::size_t minCases = 1;
-  std::map<std::string, std::string> expectStatus, expectStderr, expectEnvironment;
+  std::map<std::string, std::string> expectStatus, expectStderr, expectEnvironment, expectOracle;
   std::vector<std::string> expectRegressed, expectFixed, failuresWithFinding;
   bool expectInterrupted = false, envelopeAlone = false;
   std::string sameAs;
@@ -107,6 +109,8 @@ int main(int argc, char** argv) {
       expectStatus.insert(splitAt(argv[++i]));
     else if (a == "--expect-stderr" && i + 1 < argc)
       expectStderr.insert(splitAt(argv[++i]));
+    else if (a == "--expect-oracle" && i + 1 < argc)
+      expectOracle.insert(splitAt(argv[++i]));
     else if (a == "--expect-interrupted")
       expectInterrupted = true;
     else if (a == "--expect-envelope-alone")
@@ -151,6 +155,21 @@ int main(int argc, char** argv) {
     const std::string status = c["status"];
     if (noFail && (status == "fail" || status == "crash" || status == "timeout"))
       violation(id + " is " + status + ": " + c["message"].get<std::string>());
+    for (auto want = expectOracle.begin(); want != expectOracle.end();) {
+      const std::size_t colon = want->first.find(':');
+      if (want->first.substr(0, colon) != id) {
+        ++want;
+        continue;
+      }
+      const std::string oracle = colon == std::string::npos ? "" : want->first.substr(colon + 1);
+      const auto& oracles = c["oracles"];
+      if (!oracles.contains(oracle))
+        violation(id + " has no oracle '" + oracle + "'");
+      else if (oracles[oracle]["verdict"] != want->second)
+        violation(id + ": oracle " + oracle + " is " + oracles[oracle]["verdict"].dump() + ", expected " +
+                  want->second + ": " + oracles[oracle]["summary"].get<std::string>());
+      want = expectOracle.erase(want);
+    }
     if (const auto want = expectStatus.find(id); want != expectStatus.end()) {
       if (status != want->second)
         violation(id + " is " + status + ", expected " + want->second + ": " + c["message"].get<std::string>());
@@ -224,6 +243,7 @@ int main(int argc, char** argv) {
     }
   }
   for (const auto& [id, status] : expectStatus) violation(id + " did not run (expected " + status + ")");
+  for (const auto& [id, verdict] : expectOracle) violation(id + " did not run (expected its oracle " + verdict + ")");
   for (const auto& [id, text] : expectStderr)
     violation(id + ": --expect-stderr needs --expect-status for the same case");
   auto listed = [&](const char* list, const std::string& id) {
