@@ -51,7 +51,8 @@ struct QueryBox {
 };
 
 // How GL counts a box's samples. Both give the same numbers by the GL and GLSL specifications
-// (occlusion_count.frag says why); the conformance case iso.counters compares them count for count.
+// (occlusion_count.frag says why); the iso.frames cases' oracle sample_counters compares them box
+// for box (conformance/modules/iso/iso_catalog.h).
 enum class SampleCounter {
   Queries,  // GL_SAMPLES_PASSED: a query object and a draw per box, as the paper tests its boxes
   Buffer,   // every box in one draw; a fragment shader run after the depth test (early fragment
