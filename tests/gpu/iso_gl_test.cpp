@@ -149,6 +149,8 @@ TEST_F(IsoGl, TheTwoCountersCountTheSameSamples) {
   renderer.load(strip(13, 0.5f));
   const std::vector<std::uint32_t> byQueries = renderer.occlusionQueries(boxes, c, SampleCounter::Queries);
   EXPECT_EQ(byQueries, renderer.occlusionQueries(boxes, c, SampleCounter::Buffer));
+  EXPECT_TRUE(renderer.occlusionQueries({}, c, SampleCounter::Buffer).empty());
+  EXPECT_TRUE(renderer.occlusionQueries({}, c, SampleCounter::Queries).empty());
   std::size_t hidden = 0, seen = 0, untested = 0;
   for (std::uint32_t n : byQueries) (n == 0 ? hidden : n == kNotTested ? untested : seen) += 1;
   EXPECT_GT(hidden, 10u);  // the comparison covers every kind of box
