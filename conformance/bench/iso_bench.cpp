@@ -78,8 +78,8 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
   bool sameAsQueries = true;  // the buffer rows' meshes and culls equal the queries' rows'
   for (const IsoScene& s : scenes) {
     std::optional<IsoFrameAverages> byQueries;
+    const std::string dataSet = s.name + " (" + formatNumber("%.0f", s.isovalue) + ")";
     for (const Mode& mode : modes) {
-      const std::string dataSet = s.name + " (" + formatNumber("%.0f", s.isovalue) + ")";
       if (mode.counter == gpu::SampleCounter::Buffer && !noBufferCounter.empty()) {
         t.rows.push_back({dataSet, mode.row, "not run: " + noBufferCounter, "", "", "", "", "", ""});
         continue;
