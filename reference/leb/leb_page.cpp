@@ -1,6 +1,8 @@
 #include "reference/leb/leb_page.h"
 
 #include <algorithm>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "reference/common/byte_stream.h"
@@ -46,36 +48,92 @@ void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChan
   reader.finish();
 }
 
+namespace {
+
+// Where a page's deltas go: the page's points inside the volume, by their place in the page (`at`
+// stays empty for a page wholly inside the volume, most of them, which holds every index of it in
+// order).
+struct PagePlaces {
+  bool all = false;
+  std::uint64_t points = 0;
+  std::vector<std::uint32_t> at;
+};
+
+PagePlaces pagePlaces(const LebStream& s, const HzOrder& order, std::uint64_t page) {
+  PagePlaces p;
+  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
+  if (order.allInside(s.dims, begin, end)) {
+    p.all = true;
+    p.points = end - begin;
+    return p;
+  }
+  p.at.reserve(std::size_t{1} << s.pageBits);
+  order.forEachInside(s.dims, begin, end, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
+    p.at.push_back(static_cast<std::uint32_t>(h - begin));
+  });
+  p.points = p.at.size();
+  return p;
+}
+
+// The deltas of a page's points (in the order its reader gives them) at their places.
+std::vector<std::int16_t> placeDeltas(const PagePlaces& p, std::span<const std::int32_t> deltas, std::size_t comps,
+                                      int pageBits) {
+  std::vector<std::int16_t> out((std::size_t{1} << pageBits) * comps, 0);
+  if (p.all) {
+    std::transform(deltas.begin(), deltas.end(), out.begin(),
+                   [](std::int32_t d) { return static_cast<std::int16_t>(d); });
+    return out;
+  }
+  for (std::size_t i = 0; i < p.at.size(); ++i)
+    for (std::size_t k = 0; k < comps; ++k)
+      out[static_cast<std::size_t>(p.at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
+  return out;
+}
+
+}  // namespace
+
 std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
                                               std::uint64_t page) {
   LebPageReader reader = openPage(s, c, page);
+  const PagePlaces places = pagePlaces(s, order, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
-  const std::size_t size = std::size_t{1} << s.pageBits;
-  std::vector<std::int16_t> out(size * comps, 0);
-  const std::uint64_t begin = page << s.pageBits, end = std::min(order.size(), (page + 1) << s.pageBits);
-  // A page wholly inside the volume (most of them) holds every index of it, in order.
-  if (order.allInside(s.dims, begin, end)) {
-    std::vector<std::int32_t> deltas(static_cast<std::size_t>(end - begin) * comps);
-    if (!deltas.empty()) reader.read(deltas);
-    std::transform(deltas.begin(), deltas.end(), out.begin(),
-                   [](std::int32_t d) { return static_cast<std::int16_t>(d); });
-    finishPage(reader, end - begin, c, page);
-    return out;
+  // The deltas in one run (LebPageReader::read, the order next() would give them), placed after.
+  std::vector<std::int32_t> deltas(static_cast<std::size_t>(places.points) * comps);
+  if (!deltas.empty()) reader.read(deltas);
+  finishPage(reader, places.points, c, page);
+  return placeDeltas(places, deltas, comps, s.pageBits);
+}
+
+std::array<std::vector<std::int16_t>, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order,
+                                                                     std::uint64_t page) {
+  const LebChannel* data = s.channel(LebChannelKind::Data);
+  const LebChannel* gradients = s.channel(LebChannelKind::Gradients);
+  if (!data || !gradients)
+    throw std::invalid_argument("decodeChannelPagesPositions: the stream does not store both channels");
+  // Each error as the two calls would report it: anything wrong with the data page comes first.
+  LebPageReader a = openPage(s, *data, page);
+  const PagePlaces places = pagePlaces(s, order, page);
+  const std::size_t ca = static_cast<std::size_t>(data->components),
+                    cb = static_cast<std::size_t>(gradients->components);
+  std::vector<std::int32_t> da(static_cast<std::size_t>(places.points) * ca),
+      db(static_cast<std::size_t>(places.points) * cb);
+  std::optional<LebPageReader> b;
+  try {
+    b.emplace(openPage(s, *gradients, page));
+  } catch (const StreamError&) {
+    if (!da.empty()) a.read(da);
+    finishPage(a, places.points, *data, page);
+    throw;
   }
-  // Otherwise the page's points inside the volume, by their place in the page; then their deltas
-  // in one run (LebPageReader::read, the order next() would give them), placed after.
-  std::vector<std::uint32_t> at;
-  at.reserve(size);
-  order.forEachInside(s.dims, begin, end, [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
-    at.push_back(static_cast<std::uint32_t>(h - begin));
-  });
-  std::vector<std::int32_t> deltas(at.size() * comps);
-  if (!at.empty()) reader.read(deltas);
-  for (std::size_t i = 0; i < at.size(); ++i)
-    for (std::size_t k = 0; k < comps; ++k)
-      out[static_cast<std::size_t>(at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
-  finishPage(reader, at.size(), c, page);
-  return out;
+  try {
+    if (places.points > 0) LebPageReader::readBoth(a, da, *b, db);
+  } catch (const StreamError&) {
+    if (a.valuesRead() == da.size()) finishPage(a, places.points, *data, page);  // then b's error
+    throw;
+  }
+  finishPage(a, places.points, *data, page);
+  finishPage(*b, places.points, *gradients, page);
+  return {placeDeltas(places, da, ca, s.pageBits), placeDeltas(places, db, cb, s.pageBits)};
 }
 
 }  // namespace voxref::ref

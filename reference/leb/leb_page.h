@@ -4,6 +4,7 @@
 // inside the volume are coded in it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <variant>
@@ -69,5 +70,13 @@ void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChan
 // and for indices past the grid's last point. Throws StreamError for a corrupt page.
 std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
                                               std::uint64_t page);
+
+// decodePagePositions of the data page and the gradients page of the same index, {data,
+// gradients}, their lead-1 codes read interleaved (LebPageReader::readBoth: the two chains of
+// lookups run side by side): what random access asks for when a point needs both channels and
+// neither page is cached. The same values and errors as the two calls (the data page's first).
+// Throws std::invalid_argument for a stream without both channels stored.
+std::array<std::vector<std::int16_t>, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order,
+                                                                     std::uint64_t page);
 
 }  // namespace voxref::ref

@@ -101,7 +101,19 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
       const std::vector<std::int16_t>* deltas = cache_.peek(key);
       PageCache::Page decoded;  // a page larger than the budget lives only here
       if (!deltas) {
-        decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+        // A point that needs both channels, neither page cached: the two pages decode together,
+        // their codes read interleaved (decodeChannelPagesPositions); this loop's next channel
+        // then finds the gradients' page in the cache (or decodes it again, where the budget
+        // cannot hold it).
+        const std::uint64_t gradientsKey = (page << 1) | static_cast<std::uint64_t>(LebChannelKind::Gradients);
+        if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients &&
+            !cache_.contains(gradientsKey)) {
+          auto both = decodeChannelPagesPositions(*stream_, order_, page);
+          cache_.get(gradientsKey, [&] { return std::move(both[1]); });
+          decoded = cache_.get(key, [&] { return std::move(both[0]); });
+        } else {
+          decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+        }
         deltas = decoded.get();
       }
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;

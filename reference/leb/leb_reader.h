@@ -2,7 +2,8 @@
 // (Gregorski et al. 2004, section 3.1, the four steps of reconstructing P(i,j,k)).
 //
 // value(p) finds p's page by its hierarchical index, takes the page's deltas from the cache
-// (decoding the page on a miss), and adds them to the prediction from p's split edge, whose
+// (decoding the page on a miss; a query for both channels that misses both pages decodes the two
+// together, decodeChannelPagesPositions in leb_page.h), and adds them to the prediction from p's split edge, whose
 // endpoint values are reconstructed the same way (recursively: the "reconstruction mask"; every
 // endpoint is coarser, so the recursion ends at the root corners within 3k + 1 levels).
 // Reconstructed values are memoised per grid point (the channels a query asked for: one entry

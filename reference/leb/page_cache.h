@@ -34,6 +34,8 @@ class PageCache {
   // The two most recent pages are found without the index (a reader alternates between a point's
   // data page and its gradient page).
   const std::vector<std::int16_t>* peek(std::uint64_t key);
+  // Whether `key` is cached, with no effect on the order or the counts.
+  bool contains(std::uint64_t key) const { return index_.count(key) != 0; }
   const Stats& stats() const { return stats_; }
   std::size_t budget() const { return budget_; }
 

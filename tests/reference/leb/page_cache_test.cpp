@@ -34,6 +34,22 @@ TEST(PageCache, KeepsTheMostRecentlyUsedPagesWithinTheBudget) {
   EXPECT_EQ(cache.stats().peakBytes, 600u);
 }
 
+// contains() answers without counting and without changing which page is evicted next.
+TEST(PageCache, ContainsChangesNothing) {
+  PageCache cache(2 * 200);  // two pages of 100 values
+  int decodes = 0;
+  cache.get(1, page(100, &decodes));
+  cache.get(2, page(100, &decodes));
+  EXPECT_TRUE(cache.contains(1));
+  EXPECT_FALSE(cache.contains(3));
+  EXPECT_EQ(cache.stats().hits, 0u);
+  EXPECT_EQ(cache.stats().misses, 2u);
+  cache.get(3, page(100, &decodes));  // 1 is still the least recently used: evicted
+  EXPECT_FALSE(cache.contains(1));
+  EXPECT_TRUE(cache.contains(2));
+  EXPECT_TRUE(cache.contains(3));
+}
+
 TEST(PageCache, FindIsAHitOrNothing) {
   PageCache cache(2 * 200);  // two pages of 100 values
   int decodes = 0;
