@@ -65,16 +65,16 @@ std::uint64_t HzOrder::countInside(const std::array<int, 3>& dims, std::uint64_t
   return n;
 }
 
-std::uint64_t HzOrder::index(const GridPoint& p) const {
-  const LebPointClass c = classifyPoint(grid_, p);
+std::uint64_t HzOrder::index(const GridPoint& p) const { return index(p, classifyPoint(grid_, p)); }
+
+std::uint64_t HzOrder::index(const GridPoint& p, const LebPointClass& c) const {
   if (c.level < 0) return (p[0] ? 1u : 0u) | (p[1] ? 2u : 0u) | (p[2] ? 4u : 0u);
   const Level& lv = levels_[static_cast<std::size_t>(c.level)];
-  const int cellSide = 2 << lv.scaleLog2;
   const int n = 1 << lv.cellBits;
   unsigned boundary = 0;
   int free[3], count = 0;
   for (int a = 0; a < 3; ++a) {
-    const int cell = p[a] / cellSide;
+    const int cell = p[a] >> (lv.scaleLog2 + 1);  // the cell of side 2h; p[a] >= 0 inside the grid
     if (cell == n)
       boundary |= 1u << a;
     else

@@ -41,6 +41,9 @@ class HzOrder {
   // (throws std::out_of_range for H >= size()).
   std::uint64_t index(const GridPoint& p) const;
   GridPoint point(std::uint64_t h) const;
+  // index(p) given p's class (classifyPoint(grid, p), which the caller has already), without
+  // classifying p again or checking that it lies inside the grid.
+  std::uint64_t index(const GridPoint& p, const LebPointClass& c) const;
 
   // Calls f(h, p, level, scaleLog2, oddAxes) for every grid point p with index h in [begin, end)
   // that lies inside the box [0, dims) (the volume), in increasing h, and for no other point: a

@@ -90,7 +90,7 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
     const Known a = valueAt(fromEdge, e.a), b = valueAt(fromEdge, e.b);
     for (std::size_t i = 0; i < 4; ++i) pred[i] = predictMidpoint(a.v[i], b.v[i]);
   }
-  const std::uint64_t h = inside ? order_.index(p) : 0, page = h >> stream_->pageBits;
+  const std::uint64_t h = inside ? order_.index(p, pc) : 0, page = h >> stream_->pageBits;
   for (const LebChannel& c : stream_->channels) {
     if (!(need & channelBit(c.kind))) continue;
     const std::size_t first = c.kind == LebChannelKind::Data ? 0 : 1, comps = static_cast<std::size_t>(c.components);

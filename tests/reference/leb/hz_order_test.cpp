@@ -28,6 +28,7 @@ TEST_P(HzOrderOnGrid, IsABijectionWithLevelsFirstAndCoarserPredictors) {
     ASSERT_EQ(order.index(p), h);
     ASSERT_EQ(seen[g.linearIndex(p)]++, 0) << "point visited twice";
     const LebPointClass pc = classifyPoint(g, p);
+    ASSERT_EQ(order.index(p, pc), h);
     const int level = pc.level;
     ASSERT_EQ(cursor.level(), level);
     if (level >= 0) {
@@ -72,7 +73,9 @@ TEST(HzOrder, LargeGridRoundTripsAtRandomIndices) {
   std::mt19937_64 rng(7);
   for (int i = 0; i < 20000; ++i) {
     const std::uint64_t h = rng() % order.size();
-    ASSERT_EQ(order.index(order.point(h)), h);
+    const GridPoint p = order.point(h);
+    ASSERT_EQ(order.index(p), h);
+    ASSERT_EQ(order.index(p, classifyPoint(order.grid(), p)), h);
   }
   HzCursor c(order, order.size() - 3);
   c.next();
