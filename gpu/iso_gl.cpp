@@ -187,15 +187,11 @@ struct IsoMeshRenderer::State {
   }
 
   void drawMesh(const ref::ViewCamera& camera) const {
-    meshProgram.use();
-    const glm::mat4 mvp = mvpOf(camera);
-    gl.UniformMatrix4fv(meshProgram.uniform("uMvp"), 1, GL_FALSE, glm::value_ptr(mvp));
+    useWithCamera(meshProgram, camera);
     gl.Uniform3f(meshProgram.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
                  static_cast<float>(camera.eye.z));
     gl.Uniform1f(meshProgram.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
-    meshVao.bind();
-    if (indexCount > 0) gl.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-    checkGl(gl, "drawing the isosurface mesh");
+    drawMeshTriangles("drawing the isosurface mesh");
   }
 
   // The samples of the first `boxes` boxes in the box buffer, a query and a draw each.
@@ -243,9 +239,14 @@ struct IsoMeshRenderer::State {
   // (docs/iso.md, "Occlusion tests in one draw").
   void drawMeshDepth(const ref::ViewCamera& camera) {
     useWithCamera(depthOnly(), camera);
+    drawMeshTriangles("drawing the isosurface mesh's depth");
+  }
+
+  // The loaded mesh's triangles with the program in use; `what` names the draw in a GL error.
+  void drawMeshTriangles(const char* what) const {
     meshVao.bind();
     if (indexCount > 0) gl.DrawElements(GL_TRIANGLES, indexCount, GL_UNSIGNED_INT, nullptr);
-    checkGl(gl, "drawing the isosurface mesh's depth");
+    checkGl(gl, what);
   }
 
   // The mesh's vertex shader with occlusion_box.frag: writes depth alone when the colour masks are off.
