@@ -60,8 +60,11 @@ enum CoderRow : std::size_t {
   kZstd,          // zstd -19 on the whole raw channel (the gradients' goal)
   kXz,            // xz -9 on the whole raw channel (the data's goal)
   kGoalOnPieces,  // the channel's goal coder on pieces of 2^16 samples (an anchor)
+  kContext16,     // voxref's context coder of the samples, pages of 2^16 (the data; the gradients derived)
+  kContext18,     // the same, pages of 2^18
   kCoderRows
 };
+bool contextRow(std::size_t row) { return row == kContext16 || row == kContext18; }
 
 // The stream's bytes of an adaptive channel besides its pages: its descriptor (no code table; 12
 // bytes a stored page) and, with the data channel, the header.
@@ -113,6 +116,23 @@ CoderFigure lead1(const ref::LebStream& s, const ChannelPages& c, int runs) {
   };
   decodeAll(true);
   return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs)};
+}
+
+// The context coder's stream of the samples alone (reference/leb/FORMAT.md, "Context pages"): its
+// bytes, header and page table included, and its whole-volume decode on one thread, checked bit
+// for bit in the run. Its gradients are derived (none stored).
+CoderFigure contextCoder(const LebDataset& d, int pageBits, int threads, int runs) {
+  ref::LebEncodeOptions o;
+  o.pageBits = pageBits;
+  o.coder = ref::LebCoder::Context;
+  o.gradients = false;
+  o.threads = threads;
+  const ref::LebStream s = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, o));
+  if (ref::decodeLeb(s, 1).data.data() != d.volume.data())
+    throw std::runtime_error("leb.coder: a context stream did not decode to its samples");
+  return {"context (voxref's: samples from their corners' values; pages of 2^" + std::to_string(pageBits) +
+              ", the whole volume decoded)",
+          static_cast<double>(s.bytes.size()), measure([&] { (void)ref::decodeLeb(s, 1); }, runs)};
 }
 
 CoderFigure baseline(const BaselineResult& b) {
@@ -183,6 +203,11 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
       f.tripleEntropy = tripleEntropyBytes(raw);
       f.derive = measure([&] { (void)ref::quantizedGradients(d.volume); }, runs);
     }
+    for (const auto& [row, pageBits] : {std::pair{kContext16, 16}, std::pair{kContext18, 18}})
+      f.coders[row] = data ? contextCoder(d, pageBits, o.threads, runs)
+                           : CoderFigure{"context, pages of 2^" + std::to_string(pageBits) +
+                                             ": none stored, derived from the samples",
+                                         0.0, f.derive};
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
     figures.push_back(std::move(f));
@@ -197,13 +222,15 @@ std::string ratioText(double r) { return formatNumber("%.3f:1", r); }
 BenchTable lebCoderBench(const BenchOptions& o) {
   BenchTable t;
   t.id = kLebCoderBenchId;
-  t.title = "LEB entropy stage: voxref's adaptive coder against lead-1 Huffman, zstd -19 and xz -9 (issue 18, goal 5)";
+  t.title =
+      "LEB entropy stage: voxref's adaptive and context coders against lead-1 Huffman, zstd -19 and xz -9 (issue 18, "
+      "goal 5)";
   t.columns = {"volume",
                "channel",
                "coder",
                "ratio",
                "decode MB/s (1 thread)",
-               "goal: adaptive beats xz -9 (data), zstd -19 (gradients)"};
+               "goal: voxref's coder beats xz -9 (data), zstd -19 (gradients)"};
   t.data["rows"] = nlohmann::json::array();
   const std::vector<LebDataset> sets = folderLebDatasets(o);
   Progress progress("voxref bench leb.coder", static_cast<long>(sets.size()));
@@ -222,8 +249,9 @@ BenchTable lebCoderBench(const BenchOptions& o) {
           {"volume", d.name}, {"channel", channel}, {"raw_bytes", f.rawBytes}, {"coders", nlohmann::json::array()}};
       for (std::size_t i = 0; i < f.coders.size(); ++i) {
         const CoderFigure& c = f.coders[i];
+        if (!data && contextRow(i)) continue;  // the context coder stores no gradients: the derived row below
         std::string verdict;
-        if (i == kAdaptive12 || i == kAdaptive16) {
+        if (i == kAdaptive12 || i == kAdaptive16 || contextRow(i)) {
           const double against = goal.bytes / c.bytes;  // the coder's ratio over the goal's
           verdict = formatNumber("%.2f", against) + " of " + goalCoderName(data) +
                     "'s ratio: " + (against > 1.0 ? "beats it" : "below it");
@@ -262,7 +290,11 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "LEB and adaptive rows count the stream's page table (12 bytes a stored page), the descriptor and, for the data, "
       "the header; the lead-1 rows also its code table. Both code the same deltas (the paper's split-edge prediction, "
       "pages coded on their own, so random access stays); the adaptive coder's contexts are the page's previous two "
-      "deltas, its models restart with every page (reference/leb/FORMAT.md, 'Adaptive pages'). zstd and xz compress "
+      "deltas, its models restart with every page (reference/leb/FORMAT.md, 'Adaptive pages'). The context coder's "
+      "rows are whole streams of the samples (header and page table counted; 'Context pages'): each point predicted "
+      "from all its corners, with contexts from their range and from its page's neighbours of its class, so a page "
+      "decodes with its corners' values, which random access reads anyway; its decode figure is the whole volume's, "
+      "and it stores no gradients (they are derived: the derived row). zstd and xz compress "
       "the raw channel whole (zstd -19, xz -9; no random access); the anchor 'on pieces' gives the goal's coder the "
       "adaptive 2^16 coder's random access: the raw channel cut into pieces of 2^16 samples (four slices of the "
       "hydrogen atom, one of the engine), each compressed on its own with its frame or .xz container, so that it "
@@ -281,12 +313,14 @@ BenchTable lebCoderBench(const BenchOptions& o) {
 StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
   StudyGroup g{"entropy stage (" + d.name + ")",
                "none: every coder decodes bit for bit (checked in the run)",
-               "decoding the whole volume's deltas (data and gradients), one thread; zstd and xz: the raw bytes",
+               "decoding the whole volume's deltas (data and gradients), one thread; zstd and xz: the raw bytes; "
+               "the context coder: the whole volume's samples, and its gradients derived from them",
                "the coded bytes (data + gradients)",
                true,
                {},
-               "The adaptive coder and lead-1 keep page random access; zstd and xz do not, except on pieces of 2^16 "
-               "samples (the data's by xz -9, the gradients' by zstd -19)."};
+               "The adaptive and context coders and lead-1 keep page random access; zstd and xz do not, except on "
+               "pieces of 2^16 samples (the data's by xz -9, the gradients' by zstd -19). The context coder stores "
+               "no gradients (derived from the samples)."};
   const std::vector<ChannelFigures> f = measureDataset(o, d);
   for (std::size_t i = 0; i < f[0].coders.size(); ++i) {
     StudyVariant v;

@@ -54,8 +54,9 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
   encodeCmd->add_option("--page-bits", encode->pageBits, "leb: pages of 2^N points (4..20)")->default_val(12);
   encodeCmd
       ->add_option("--coder", encode->lebCoder,
-                   "leb: the pages' entropy stage: lead1 (the paper's Huffman code; a version 2 stream) or adaptive "
-                   "(voxref's range coder; version 3)")
+                   "leb: the pages' entropy stage: lead1 (the paper's Huffman code; a version 2 stream), adaptive "
+                   "(voxref's range coder; version 3) or context (voxref's range coder of the samples from their "
+                   "corners; version 4, with --derive-gradients or --no-gradients)")
       ->default_val("lead1");
   encodeCmd->add_flag("--no-gradients", encode->noGradients, "leb: code the data only, no gradients channel");
   encodeCmd->add_flag("--derive-gradients", encode->deriveGradients,

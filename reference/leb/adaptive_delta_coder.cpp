@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "reference/common/byte_stream.h"
+#include "reference/leb/delta_decisions.h"
 #include "reference/leb/lead1_coder.h"
 
 namespace voxref::ref {
@@ -16,52 +17,6 @@ void checkShape(int valueBits, int components) {
     throw std::invalid_argument("adaptive delta coder: value bits must be 8 or 16, got " + std::to_string(valueBits));
   if (components != 1 && components != 3)
     throw std::invalid_argument("adaptive delta coder: components must be 1 or 3, got " + std::to_string(components));
-}
-
-// The decisions of one delta (the header's steps 1-4), for the encoder (Coder = RangeEncoder,
-// `delta` given) and the decoder (RangeDecoder): one function, so both make the same decisions
-// with the same models in the same order.
-struct EncodeBits {
-  RangeEncoder& out;
-  int bit(BitModel& m, int b) {
-    out.encode(m, b);
-    return b;
-  }
-  std::uint32_t direct(std::uint32_t v, int n) {
-    out.encodeDirect(v, n);
-    return v;
-  }
-};
-struct DecodeBits {
-  RangeDecoder& in;
-  int bit(BitModel& m, int) { return in.decode(m); }
-  std::uint32_t direct(std::uint32_t, int n) { return in.decodeDirect(n); }
-};
-
-// Returns the symbol and sets sign and magnitude (decoding) or takes them (encoding).
-template <class Bits>
-int codeDelta(Bits bits, AdaptiveDeltaModels& m, int context, int component, int symbol, int& negative,
-              std::uint32_t& magnitude) {
-  if (bits.bit(m.zero(context), symbol == 0 ? 0 : 1) == 0) return 0;
-  // The symbol: s - 1 as a binary tree, most significant bit first.
-  int node = 1;
-  for (int level = m.treeDepth() - 1; level >= 0; --level)
-    node = 2 * node + bits.bit(m.tree(context, node), ((symbol - 1) >> level) & 1);
-  const int s = node - (1 << m.treeDepth()) + 1;
-  negative = bits.bit(m.sign(component, s), negative);
-  // The mantissa below the leading one.
-  const int rest = s - 1;
-  std::uint32_t below = 0;
-  int prefix = 0;
-  for (int i = rest - 1; i >= 0 && rest - 1 - i < 2; --i) {
-    const int b = bits.bit(m.mantissa(component, s, prefix), static_cast<int>((magnitude >> i) & 1u));
-    below = (below << 1) | static_cast<std::uint32_t>(b);
-    prefix = 1 + b;
-  }
-  const int direct = std::max(rest - 2, 0);
-  below = (below << direct) | bits.direct(magnitude & ((1u << direct) - 1), direct);
-  magnitude = (1u << rest) | below;
-  return s;
 }
 
 }  // namespace
@@ -102,8 +57,8 @@ std::string encodeAdaptivePage(std::span<const std::int32_t> deltas, int valueBi
     int negative = d < 0 ? 1 : 0;
     std::uint32_t magnitude = static_cast<std::uint32_t>(d < 0 ? -static_cast<std::int64_t>(d) : d);
     const int symbol = lead1Symbol(d);
-    codeDelta(EncodeBits{out}, models, context.next(), static_cast<int>(i % static_cast<std::size_t>(components)),
-              symbol, negative, magnitude);
+    codeDeltaDecisions(EncodeBits{out}, models, context.next(),
+                       static_cast<int>(i % static_cast<std::size_t>(components)), symbol, negative, magnitude);
     context.push(symbol);
   }
   return out.finish();
@@ -126,7 +81,7 @@ std::int32_t AdaptivePageReader::next() {
   const int component = static_cast<int>(read_ % static_cast<std::size_t>(models_.components()));
   int negative = 0;
   std::uint32_t magnitude = 0;
-  const int s = codeDelta(DecodeBits{in_}, models_, context_.next(), component, 0, negative, magnitude);
+  const int s = codeDeltaDecisions(DecodeBits{in_}, models_, context_.next(), component, 0, negative, magnitude);
   if (in_.overrun()) fail("the page ends inside value " + std::to_string(read_));
   const int b = models_.valueBits();
   if (s == b && (magnitude != (1u << (b - 1)) || !negative))

@@ -15,6 +15,7 @@
 #include "reference/common/crc32.h"
 #include "reference/common/parallel.h"
 #include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/context_codec.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
@@ -509,6 +510,10 @@ void checkSpan(const LebVolumeIn& v, const LebEncodeOptions& o) {
   if (v.data8 && v.sampleBits != 8) throw std::invalid_argument("8-bit storage holds 8-bit samples only");
   if (o.deriveGradients && !o.gradients)
     throw std::invalid_argument("deriving the gradients needs gradients: options.gradients is false");
+  if (lebStoresGradients(o) && o.coder == LebCoder::Context)
+    throw std::invalid_argument(
+        "the context coder stores the samples alone: derive the gradients from them (deriveGradients, voxref encode "
+        "--derive-gradients) or encode without gradients");
   if (lebStoresGradients(o) && !v.gradients) throw std::invalid_argument("the gradients channel needs the gradients");
   checkPageBits(o.pageBits);
 }
@@ -527,6 +532,11 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
   checkSpan(v, o);
   const LebGrid grid = lebGridCovering(v.dims);
   const HzOrder order(grid);
+  if (o.coder == LebCoder::Context) {  // the samples alone (checkSpan: no gradients channel)
+    const std::uint64_t end = encodeContextChannel(order, v, o.pageBits, o.threads, o.window, write, kLebHeaderBytes);
+    write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, 1, end, o.coder, o.deriveGradients));
+    return end;
+  }
   std::vector<LebChannelKind> kinds{LebChannelKind::Data};
   if (lebStoresGradients(o)) kinds.push_back(LebChannelKind::Gradients);
   std::uint64_t offset = kLebHeaderBytes;
@@ -591,7 +601,9 @@ std::uint64_t lebDecodeMemoryBytes(const LebStream& s) {
 }
 
 std::uint64_t lebDecodeShellBytes(const LebStream& s) {
-  // One a channel, held together (the data and gradients are decoded in one walk).
+  // One a channel, held together (the data and gradients are decoded in one walk); none for the
+  // context coder, whose predictions read corners inside the volume only.
+  if (s.coder == LebCoder::Context) return 0;
   return LebPadding::tableBytes(s.grid, s.dims) * s.channels.size();
 }
 
@@ -791,6 +803,14 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     throw std::invalid_argument("decodeLebInto: the output does not match the stream's " + dimsText(s.dims) + " uint" +
                                 std::to_string(s.sampleBits) + (hasGradients ? " with gradients" : ""));
   const HzOrder order(s.grid);
+  if (s.coder == LebCoder::Context) {  // the data channel alone (parseLebStream); then any derived gradients
+    const double share = derive ? 0.5 : 1.0;
+    LebProgress progress;
+    if (window) progress = [&](double done) { window(share * done); };
+    decodeContextChannel(s, order, out, threads, progress);
+    if (derive) deriveGradients(out, threads, window, {share, 1.0 - share});
+    return;
+  }
   // The work in units of one component's reconstruction: the data's one, a gradients channel's
   // three, the derivation of the gradients one (it reads the samples once, and is cheaper than a
   // component's walk).

@@ -27,24 +27,35 @@ StreamError pageNotStored(const LebChannel& c, std::uint64_t page) {
                                              "table lacks it)");
 }
 
-LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
+StoredPage storedPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
   const std::ptrdiff_t slot = c.slotOf(page);
   if (slot < 0) throw pageNotStored(c, page);
   const auto j = static_cast<std::size_t>(slot);
-  const std::string_view bytes = s.page(c, j);
-  const std::size_t offset = c.payloadOffset + static_cast<std::size_t>(c.pageOffset[j]);
-  if (!crc32Matches(bytes, c.pageCrc[j]))
-    throw StreamError(offset, pageName(c, page) + ": CRC-32 mismatch (the page is corrupt)");
+  StoredPage p{s.page(c, j), c.payloadOffset + static_cast<std::size_t>(c.pageOffset[j]), pageName(c, page)};
+  if (!crc32Matches(p.bytes, c.pageCrc[j]))
+    throw StreamError(p.offset, p.name + ": CRC-32 mismatch (the page is corrupt)");
+  return p;
+}
+
+LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page) {
+  if (s.coder == LebCoder::Context)
+    throw std::invalid_argument(
+        "openPage: the pages of the context coder hold values, which decode with their "
+        "corners' values (ContextPageReader), not deltas");
+  StoredPage p = storedPage(s, c, page);
   if (s.coder == LebCoder::Adaptive)
-    return LebPageReader(AdaptivePageReader(bytes, c.valueBits, c.components, offset, pageName(c, page)));
-  return LebPageReader(Lead1PageReader(*c.decoder, bytes, offset, pageName(c, page)));
+    return LebPageReader(AdaptivePageReader(p.bytes, c.valueBits, c.components, p.offset, std::move(p.name)));
+  return LebPageReader(Lead1PageReader(*c.decoder, p.bytes, p.offset, std::move(p.name)));
+}
+
+StreamError pageWithoutPoints(const LebChannel& c, std::uint64_t page) {
+  return StreamError(c.descriptorOffset, pageName(c, page) +
+                                             " is stored, but it holds no point of the volume (a stream stores "
+                                             "exactly the pages that do)");
 }
 
 void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page) {
-  if (points == 0)
-    throw StreamError(c.descriptorOffset, pageName(c, page) +
-                                              " is stored, but it holds no point of the volume (a stream stores "
-                                              "exactly the pages that do)");
+  if (points == 0) throw pageWithoutPoints(c, page);
   reader.finish();
 }
 

@@ -7,6 +7,8 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -23,6 +25,8 @@ std::uint64_t insidePointsOfPage(const HzOrder& order, const Dims3& dims, int pa
 
 // The error of a page that holds points of the volume but is not in the stream's page table.
 StreamError pageNotStored(const LebChannel& c, std::uint64_t page);
+// The error of a page in the stream's page table that holds no point of the volume.
+StreamError pageWithoutPoints(const LebChannel& c, std::uint64_t page);
 
 // The deltas of one page, by the stream's coder (LebStream::coder): the same values and errors
 // whichever coder made the page.
@@ -56,9 +60,20 @@ class LebPageReader {
   std::variant<Lead1PageReader, AdaptivePageReader> r_;
 };
 
-// Checks the page's CRC-32 (StreamError naming the channel, the page and its offset) and returns
-// a reader of its deltas; the page holds one delta per component of each point inside the volume.
-// The page's bytes are the stream's: the stream must outlive the reader.
+// A stored page's bytes, the offset of its first byte in the stream and its name ("data page 17"),
+// its CRC-32 checked: StreamError naming the channel, the page and its offset, or pageNotStored for
+// a page the table lacks. The bytes are the stream's.
+struct StoredPage {
+  std::string_view bytes;
+  std::size_t offset = 0;
+  std::string name;
+};
+StoredPage storedPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
+
+// Checks the page's CRC-32 (storedPage) and returns a reader of its deltas (lead-1 and adaptive
+// streams; std::invalid_argument for the context coder's, whose pages hold values); the page
+// holds one delta per component of each point inside the volume. The page's bytes are the
+// stream's: the stream must outlive the reader.
 LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t page);
 
 // The end of a page read whole: StreamError unless the page held `points` > 0 points of the

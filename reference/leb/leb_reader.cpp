@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/leb/context_value_coder.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_page.h"
 #include "reference/leb/prediction.h"
@@ -82,7 +83,9 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   // takes its gradient from its neighbours' samples (below), so its split edge gives the rest; one
   // in the padding takes its prediction, as a padding point of a gradients channel does.
   const bool derive = stream_->derivedGradients && (need & 2u) != 0;
-  const unsigned fromEdge = derive && inside ? need & ~2u : need;
+  // A context stream's page holds the samples themselves (FORMAT.md, "Context pages"): a point
+  // inside the volume needs no split edge for its sample.
+  const unsigned fromEdge = inside ? need & ~(derive ? 2u : 0u) & ~(contextPages() ? 1u : 0u) : need;
   std::array<std::int32_t, 4> pred{0, 0, 0, 0};
   const LebPointClass pc = classifyPoint(grid, p);
   if (pc.level >= 0 && fromEdge != 0) {
@@ -111,14 +114,19 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
           auto both = decodeChannelPagesPositions(*stream_, order_, page);
           cache_.get(gradientsKey, [&] { return std::move(both[1]); });
           decoded = cache_.get(key, [&] { return std::move(both[0]); });
+        } else if (contextPages()) {
+          decoded = cache_.get(key, [&] { return decodeContextPage(c, page); });
         } else {
           decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
         }
         deltas = decoded.get();
       }
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;
-      for (std::size_t k = 0; k < comps; ++k)
-        have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);
+      if (contextPages())  // the data channel alone: its values' bits
+        have.v[0] = static_cast<std::uint16_t>((*deltas)[at]);
+      else
+        for (std::size_t k = 0; k < comps; ++k)
+          have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);
     }
     ++reconstructed_;
   }
@@ -136,6 +144,26 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
     entry = have;
   }
   return have;
+}
+
+std::vector<std::int16_t> LebReader::decodeContextPage(const LebChannel& c, std::uint64_t page) {
+  const StoredPage bytes = storedPage(*stream_, c, page);
+  ContextPageReader reader(bytes.bytes, c.valueBits, stream_->pageBits, page, bytes.offset, bytes.name);
+  const std::uint64_t begin = page << stream_->pageBits;
+  std::vector<std::int16_t> values(std::size_t{1} << stream_->pageBits, 0);
+  reader.decode(
+      order_, stream_->dims,
+      [&](const GridPoint& q) -> std::int32_t {
+        // A corner is coarser than the point: decoded before it in this page, or in an earlier page
+        // (through the cache, recursively).
+        const std::uint64_t hq = order_.index(q);
+        if (hq >= begin) return static_cast<std::uint16_t>(values[static_cast<std::size_t>(hq - begin)]);
+        return valueAt(1u, q).v[0];
+      },
+      [&](std::uint64_t h, const GridPoint&, std::int32_t v) {
+        values[static_cast<std::size_t>(h - begin)] = static_cast<std::int16_t>(v);
+      });
+  return values;
 }
 
 void LebReader::deriveGradient(const GridPoint& p, bool inside, const std::array<std::int32_t, 4>& pred, Known& have) {

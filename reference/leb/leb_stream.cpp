@@ -9,7 +9,9 @@
 
 namespace voxref::ref {
 
-std::string_view lebCoderName(LebCoder coder) { return coder == LebCoder::Lead1 ? "lead1" : "adaptive"; }
+std::string_view lebCoderName(LebCoder coder) {
+  return coder == LebCoder::Lead1 ? "lead1" : coder == LebCoder::Adaptive ? "adaptive" : "context";
+}
 
 std::uint64_t LebStream::pageCount() const { return lebPageCount(grid, pageBits); }
 
@@ -99,9 +101,10 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
     r.fail(32, "header_crc: CRC-32 mismatch (the header is corrupt)");
   const std::size_t versionAt = r.offset();
   const int version = r.le<std::uint16_t>("version");
-  if (version != kLebVersion && version != kLebAdaptiveVersion)
-    r.fail(versionAt, "version: expected " + std::to_string(kLebVersion) + " (lead-1) or " +
-                          std::to_string(kLebAdaptiveVersion) + " (adaptive), got " + std::to_string(version) +
+  if (version != kLebVersion && version != kLebAdaptiveVersion && version != kLebContextVersion)
+    r.fail(versionAt, "version: expected " + std::to_string(kLebVersion) + " (lead-1), " +
+                          std::to_string(kLebAdaptiveVersion) + " (adaptive) or " + std::to_string(kLebContextVersion) +
+                          " (context), got " + std::to_string(version) +
                           (version == 1 ? " (version 1 streams, with a page table entry for every page of the padding, "
                                           "are no longer read: encode the volume again)"
                                         : ""));
@@ -117,13 +120,19 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
                   " (expected " + std::to_string(lebGridCovering(s.dims).k) + ")");
   s.pageBits = r.le<std::uint8_t>("page_bits", kMinLebPageBits, kMaxLebPageBits);
   const int channelCount = r.le<std::uint8_t>("channel_count", 1, 2);
-  // Byte 22, the coder: the version's (2: lead-1, 3: adaptive).
+  // Byte 22, the coder: the version's (2: lead-1, 3: adaptive, 4: context).
   const std::size_t coderAt = r.offset();
   const int coder = r.le<std::uint8_t>("coder");
-  if (coder != (version == kLebVersion ? 0 : 1))
+  const LebCoder expected = static_cast<LebCoder>(version - kLebVersion);
+  if (coder != static_cast<int>(expected))
     r.fail(coderAt, "coder: a version " + std::to_string(version) + " stream has coder " +
-                        (version == kLebVersion ? "0 (lead-1)" : "1 (adaptive)") + ", got " + std::to_string(coder));
-  s.coder = static_cast<LebCoder>(coder);
+                        std::to_string(static_cast<int>(expected)) + " (" +
+                        (expected == LebCoder::Lead1 ? std::string("lead-1") : std::string(lebCoderName(expected))) +
+                        "), got " + std::to_string(coder));
+  s.coder = expected;
+  if (s.coder == LebCoder::Context && channelCount != 1)
+    r.fail(coderAt - 1, "channel_count: a version 4 stream (context coder) has the data channel alone, got " +
+                            std::to_string(channelCount) + " channels");
   // Byte 23, the gradients: 1 when they are derived from the data (then no gradients channel).
   const std::size_t gradientsAt = r.offset();
   s.derivedGradients = r.le<std::uint8_t>("gradients", 0, 1) == 1;
@@ -189,8 +198,8 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + ", but the pages add up to " +
                             std::to_string(c.pageOffset.back()));
     // Every delta costs at least one bit with lead-1 (no code is shorter) and 2^-14 bytes with the
-    // adaptive coder (FORMAT.md, "Adaptive pages"), so a stream too short for its volume is
-    // refused here, before a decoder allocates anything for that volume.
+    // adaptive and the context coders (their zero decision: FORMAT.md, "Adaptive pages"), so a
+    // stream too short for its volume is refused here, before a decoder allocates anything for it.
     const std::uint64_t deltas =
         static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
     const std::uint64_t perByte = s.coder == LebCoder::Lead1 ? 8 : kAdaptiveDeltasPerByteBound;

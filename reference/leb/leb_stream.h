@@ -28,9 +28,11 @@ enum class LebChannelKind : std::uint8_t { Data = 0, Gradients = 1 };
 
 // The entropy stage of a stream's pages (FORMAT.md, header byte 22): the paper's lead-1 Huffman
 // code (lead1_coder.h; version 2 streams) or voxref's adaptive range coder
-// (adaptive_delta_coder.h; version 3). The deltas coded are the same.
-enum class LebCoder : std::uint8_t { Lead1 = 0, Adaptive = 1 };
-std::string_view lebCoderName(LebCoder coder);  // "lead1", "adaptive"
+// (adaptive_delta_coder.h; version 3), which code the same deltas; or voxref's context coder of
+// the samples (context_value_coder.h; version 4), whose pages decode with their corners' values
+// and which stores the data channel alone.
+enum class LebCoder : std::uint8_t { Lead1 = 0, Adaptive = 1, Context = 2 };
+std::string_view lebCoderName(LebCoder coder);  // "lead1", "adaptive", "context"
 
 struct LebChannel {
   LebChannelKind kind = LebChannelKind::Data;
@@ -78,7 +80,12 @@ struct LebStream {
 inline constexpr std::size_t kLebHeaderBytes = 36;
 inline constexpr int kLebVersion = 2;          // lead-1 streams
 inline constexpr int kLebAdaptiveVersion = 3;  // streams of the adaptive coder
-inline int lebVersionOf(LebCoder coder) { return coder == LebCoder::Lead1 ? kLebVersion : kLebAdaptiveVersion; }
+inline constexpr int kLebContextVersion = 4;   // streams of the context coder
+inline int lebVersionOf(LebCoder coder) {
+  return coder == LebCoder::Lead1      ? kLebVersion
+         : coder == LebCoder::Adaptive ? kLebAdaptiveVersion
+                                       : kLebContextVersion;
+}
 inline constexpr int kMinLebPageBits = 4, kMaxLebPageBits = 20;
 // The pages of a grid in pages of 2^pageBits indices, stored or not: ceil((2^k + 1)^3 / 2^pageBits).
 inline std::uint64_t lebPageCount(const LebGrid& grid, int pageBits) {

@@ -169,10 +169,10 @@ voxref_bad_input(vxleb.truncated_in_pages MAKE "${leb_make}|truncate:-1" COMMAND
   EXPECT "<DIR>/bad\\.vxleb: offset 24: total_bytes: [^\n]*describes [0-9]+ bytes, the stream has [0-9]+ \\(truncated\\)")
 voxref_bad_input(vxleb.header_checksum_mismatch MAKE "${leb_make}|u16:4=3" COMMAND "${leb_run}" NEEDS bi_leb
   EXPECT "<DIR>/bad\\.vxleb: offset 32: header_crc: CRC-32 mismatch")
-voxref_bad_input(vxleb.unsupported_version MAKE "${leb_make}|u16:4=4|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
-  EXPECT "<DIR>/bad\\.vxleb: offset 4: version: expected 2 \\(lead-1\\) or 3 \\(adaptive\\), got 4")
+voxref_bad_input(vxleb.unsupported_version MAKE "${leb_make}|u16:4=5|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
+  EXPECT "<DIR>/bad\\.vxleb: offset 4: version: expected 2 \\(lead-1\\), 3 \\(adaptive\\) or 4 \\(context\\), got 5")
 voxref_bad_input(vxleb.version_1 MAKE "${leb_make}|u16:4=1|${hcrc}" COMMAND "${leb_run}" NEEDS bi_leb
-  EXPECT "<DIR>/bad\\.vxleb: offset 4: version: expected 2 \\(lead-1\\) or 3 \\(adaptive\\), got 1 \\(version 1 streams[^\n]*encode the volume again\\)")
+  EXPECT "<DIR>/bad\\.vxleb: offset 4: version: expected 2 \\(lead-1\\), 3 \\(adaptive\\) or 4 \\(context\\), got 1 \\(version 1 streams[^\n]*encode the volume again\\)")
 # Header byte 22, the coder, is the version's (a lead-1 stream relabelled as version 3, and a
 # version 2 stream claiming the adaptive coder), and byte 23 (the gradients) is 0 or 1, and 1 only
 # without a gradients channel.

@@ -5,6 +5,7 @@
 //   make_fuzz_seeds timevarying DIR   .vxtv containers (serializeTimeVarying of encoded series)
 //   make_fuzz_seeds huffman DIR       lead-1 code tables with a page each, and symbol counts
 //   make_fuzz_seeds adaptive_page DIR pages of the adaptive delta coder, every shape
+//   make_fuzz_seeds context_page DIR  pages of the context coder of small volumes (context_page_input.h)
 //   make_fuzz_seeds scene DIR         scene JSON: the built-in cases' scenes and the iso scenes
 //   make_fuzz_seeds raw_volume DIR    raw volumes, plain and gzip (the target's input layout)
 //   make_fuzz_seeds manifest DIR      fixture manifests (the layout generateIsoFixtures writes)
@@ -41,9 +42,13 @@
 #include "conformance/modules/timevarying/timevarying_scene.h"
 #include "reference/common/byte_stream.h"
 #include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/context_value_coder.h"
+#include "reference/leb/hz_order.h"
 #include "reference/leb/lead1_coder.h"
+#include "reference/leb/leb_padding.h"
 #include "reference/timevarying/container.h"
 #include "reference/timevarying/plume.h"
+#include "tests/fuzz/context_page_input.h"
 
 namespace {
 
@@ -374,16 +379,47 @@ void adaptivePage() {
   seed("zeros8.adaptive", 8, 1, std::vector<std::int32_t>(4096, 0));
 }
 
+// --- context coder pages -----------------------------------------------------------------------
+// Each seed is a header (context_page_input.h) and the page the encoder makes of the volume the
+// target builds from it.
+void contextPage() {
+  auto seed = [](const std::string& name, std::string header) {
+    const auto* h = reinterpret_cast<const std::uint8_t*>(header.data());
+    const ref::HzOrder order(fuzz::contextPageGrid(h));
+    const fuzz::ContextPageInput in = fuzz::contextPageInput(order, h);
+    const auto valueOf = [&](const ref::GridPoint& q) { return in.volume[ref::volumeIndex(q, in.dims)]; };
+    const std::string page = ref::encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page, valueOf);
+    std::vector<std::int32_t> back = in.volume;
+    ref::ContextPageReader reader(page, in.bits, in.pageBits, in.page, 0, name);
+    reader.decode(
+        order, in.dims, [&](const ref::GridPoint& q) { return back[ref::volumeIndex(q, in.dims)]; },
+        [&](std::uint64_t, const ref::GridPoint& p, std::int32_t v) { back[ref::volumeIndex(p, in.dims)] = v; });
+    if (back != in.volume) throw std::runtime_error(name + " does not read back");
+    write(name, header + page);
+  };
+  // bits, extents (minus one), page bits (minus four), page selector
+  seed("cube8.context", std::string{0, 8, 8, 8, 0, 0});
+  seed("cube8_last_page.context", std::string{0, 8, 8, 8, 0, 100});
+  seed("thin16.context", std::string{1, 11, 0, 2, 2, 1});
+  seed("slab8.context", std::string{0, 9, 5, 0, 1, 3});
+  seed("single.context", std::string{0, 0, 0, 0, 0, 0});
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::map<std::string, std::function<void()>> kinds{
-      {"timevarying", timevarying},   {"huffman", huffman},           {"scene", scene},
-      {"raw_volume", rawVolume},      {"manifest", manifest},         {"results", results},
-      {"expectations", expectations}, {"adaptive_page", adaptivePage}};
+  const std::map<std::string, std::function<void()>> kinds{{"timevarying", timevarying},
+                                                           {"huffman", huffman},
+                                                           {"scene", scene},
+                                                           {"raw_volume", rawVolume},
+                                                           {"manifest", manifest},
+                                                           {"results", results},
+                                                           {"expectations", expectations},
+                                                           {"adaptive_page", adaptivePage},
+                                                           {"context_page", contextPage}};
   if (argc != 3 || !kinds.count(argv[1])) {
     std::cerr << "usage: make_fuzz_seeds "
-                 "timevarying|huffman|adaptive_page|scene|raw_volume|manifest|results|expectations DIR\n";
+                 "timevarying|huffman|adaptive_page|context_page|scene|raw_volume|manifest|results|expectations DIR\n";
     return 2;
   }
   outDir = argv[2];

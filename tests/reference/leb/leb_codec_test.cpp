@@ -633,7 +633,8 @@ TEST_F(LebCorruptAdaptive, TheVersionAndTheCoderAgree) {
   };
   EXPECT_EQ(errorWith(22, 0), "offset 22: coder: a version 3 stream has coder 1 (adaptive), got 0");
   EXPECT_EQ(errorWith(4, 2), "offset 22: coder: a version 2 stream has coder 0 (lead-1), got 1");
-  EXPECT_EQ(errorWith(4, 4), "offset 4: version: expected 2 (lead-1) or 3 (adaptive), got 4");
+  EXPECT_EQ(errorWith(4, 4), "offset 22: coder: a version 4 stream has coder 2 (context), got 1");
+  EXPECT_EQ(errorWith(4, 5), "offset 4: version: expected 2 (lead-1), 3 (adaptive) or 4 (context), got 5");
   EXPECT_EQ(errorWith(23, 2), "offset 23: gradients: expected 0..1, got 2");  // derived_gradients_test.cpp has 1
 }
 

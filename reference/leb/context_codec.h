@@ -1,0 +1,47 @@
+// The whole-volume encoder and decoder of the context coder's streams (version 4; FORMAT.md beside
+// this file, "Context pages"; the values' coding is context_value_coder.h). leb_codec.h's
+// encodeLebTo and decodeLebInto call them for LebCoder::Context: a stream of this coder has the
+// data channel alone, so these code the samples.
+//
+// Encoding: every stored page (those holding a point of the volume) is coded from the samples on
+// its own, pages in parallel, in batches whose coded pages are written in order before the next.
+// Decoding: a page's points need the values of their corners, which are coarser; so the pages go in
+// waves, each wave the stored pages whose corners all lie in the waves before it (the pages of one
+// scale, nearly all the grid's, are one wave), decoded in parallel straight into the output.
+// Deterministic: the same bytes for every thread count.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+
+#include "reference/leb/hz_order.h"
+#include "reference/leb/leb_codec.h"
+#include "reference/leb/leb_stream.h"
+
+namespace voxref::ref {
+
+// Told how far the work has come (0..1, rising), between batches, with no worker running (the
+// caller's LebWindow, scaled to this part of its work).
+using LebProgress = std::function<void(double done)>;
+
+// Writes the data channel of `v`'s samples at `offset` onward (its descriptor, then its pages, as
+// FORMAT.md lays them out) through `write`, and returns the offset after it.
+// Memory beside the span: the stored pages' table (12 bytes a page) and one batch of coded pages
+// (4 x workers pages of at most about 2^pageBits x 3 bytes), plus 2^pageBits bytes a worker.
+std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, int pageBits, int threads,
+                                   const LebProgress& progress, const LebStreamWrite& write, std::uint64_t offset);
+
+// The page below which every page must be decoded before `page` can be: the pages that hold the
+// corners of its points (all but those in `page` itself, which it decodes before it reads them).
+// Conservative: every page below the first level of the scale of the page's last index, or `page`
+// when that level begins in it.
+std::uint64_t contextPagesNeededBelow(const HzOrder& order, int pageBits, std::uint64_t page);
+
+// Decodes the data channel of a version 4 stream into out.data8 or out.data16. Checks the page
+// table against the extents first (StreamError for a page holding points of the volume that the
+// stream lacks), then each page as it is decoded (its CRC-32, its values, its end).
+// Memory beside `out`: the table of waves (8 bytes a stored page) and 2^pageBits bytes a worker.
+void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVolumeOut& out, int threads,
+                          const LebProgress& progress);
+
+}  // namespace voxref::ref

@@ -1,0 +1,102 @@
+#include "reference/leb/context_value_coder.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "reference/common/byte_stream.h"
+#include "reference/leb/lead1_coder.h"
+
+namespace voxref::ref {
+
+ContextModels::ContextModels(int valueBits) : valueBits_(valueBits), treeDepth_(valueBits == 16 ? 4 : 3) {
+  if (valueBits != 8 && valueBits != 16)
+    throw std::invalid_argument("context coder: value bits must be 8 or 16, got " + std::to_string(valueBits));
+  zero_.resize(kContextContexts);
+  tree_.resize(static_cast<std::size_t>(kContextContexts) * 16);
+  sign_.resize(static_cast<std::size_t>(kContextSignContexts) * 17);
+  mantissa_.resize(static_cast<std::size_t>(kContextSignContexts) * 17 * 3);
+}
+
+ContextPageState::ContextPageState(int valueBits, int pageBits, std::uint64_t page)
+    : models_(valueBits), begin_(page << pageBits), signedSymbol_(std::size_t{1} << pageBits, 0) {}
+
+ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, const GridPoint& p, const LebPointClass& c,
+                                                      int rangeBucket) const {
+  // FORMAT.md, "Context pages": the neighbours of p's own class at -2h on each axis. They are of
+  // p's level and precede it in the hierarchical order; those of an earlier page do not count, so
+  // that a page depends on no other page of its scale.
+  const int step = 2 << c.scaleLog2;
+  int symbols = 0, signs = 0;
+  for (int a = 0; a < 3; ++a) {
+    if (p[a] < step) continue;
+    GridPoint q = p;
+    q[a] -= step;
+    const std::uint64_t h = order.index(q, c);
+    if (h < begin_ || h - begin_ >= signedSymbol_.size()) continue;
+    const int s = signedSymbol_[static_cast<std::size_t>(h - begin_)];
+    symbols += s < 0 ? -s : s;
+    signs += (s > 0) - (s < 0);
+  }
+  return {std::min(symbols, kContextNeighbourSums - 1) * kContextRangeBuckets + rangeBucket,
+          std::clamp(signs, -3, 3) + 3};
+}
+
+void ContextPageState::record(std::uint64_t h, int symbol, bool negative) {
+  signedSymbol_[static_cast<std::size_t>(h - begin_)] = static_cast<std::int8_t>(negative ? -symbol : symbol);
+}
+
+void encodeContextValue(RangeEncoder& out, ContextPageState& state, std::uint64_t h, const ContextPoint& point,
+                        std::int32_t value) {
+  const int b = state.models().valueBits();
+  const std::int32_t r = predictionDelta(value, point.prediction, b);  // the residual, b-bit two's complement
+  int negative = r < 0 ? 1 : 0;
+  std::uint32_t magnitude = static_cast<std::uint32_t>(r < 0 ? -static_cast<std::int64_t>(r) : r);
+  const int symbol = lead1Symbol(r);
+  codeDeltaDecisions(EncodeBits{out}, state.models(), point.contexts.context, point.contexts.signContext, symbol,
+                     negative, magnitude);
+  state.record(h, symbol, negative != 0);
+}
+
+ContextPageReader::ContextPageReader(std::string_view bytes, int valueBits, int pageBits, std::uint64_t page,
+                                     std::size_t streamOffset, std::string what)
+    : state_(valueBits, pageBits, page),
+      in_(bytes),
+      pageBits_(pageBits),
+      pageBytes_(bytes.size()),
+      streamOffset_(streamOffset),
+      what_(std::move(what)) {
+  if (bytes.size() < 5 || !in_.firstByteValid())  // named at the page's first byte
+    throw StreamError(streamOffset_, what_ + ": " +
+                                         (bytes.size() < 5 ? "a page of the context coder has at least 5 bytes"
+                                                           : "the first byte of a context page must be 0"));
+}
+
+std::int32_t ContextPageReader::next(std::uint64_t h, const ContextPoint& point) {
+  int negative = 0;
+  std::uint32_t magnitude = 0;
+  const int s = codeDeltaDecisions(DecodeBits{in_}, state_.models(), point.contexts.context, point.contexts.signContext,
+                                   0, negative, magnitude);
+  if (in_.overrun()) fail("the page ends inside value " + std::to_string(read_));
+  const int b = state_.models().valueBits();
+  if (s == b && (magnitude != (1u << (b - 1)) || !negative))
+    fail("value " + std::to_string(read_) + ": residual magnitude " + std::to_string(magnitude) +
+         (negative ? "" : " (+)") + " is outside the " + std::to_string(b) + "-bit range");
+  state_.record(h, s, negative != 0);
+  ++read_;
+  const std::int32_t r = s == 0     ? 0
+                         : negative ? -static_cast<std::int32_t>(magnitude)
+                                    : static_cast<std::int32_t>(magnitude);
+  return wrapSample(point.prediction + r, b, false);
+}
+
+void ContextPageReader::finish() const {
+  if (read_ == 0) fail("the page holds no point of the volume (a stream stores exactly the pages that do)");
+  if (in_.consumed() != pageBytes_)
+    fail(std::to_string(pageBytes_ - std::min(in_.consumed(), pageBytes_)) + " bytes left after the last value");
+}
+
+void ContextPageReader::fail(const std::string& detail) const {
+  throw StreamError(streamOffset_ + std::min(in_.consumed(), pageBytes_), what_ + ": " + detail);
+}
+
+}  // namespace voxref::ref

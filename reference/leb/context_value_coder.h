@@ -1,0 +1,199 @@
+// voxref's context coder of an LEB stream's samples (FORMAT.md beside this file, "Context pages",
+// version 4; issue 18, goal 5: beyond the paper's ratio while keeping page random access).
+//
+// The paper's codec (Gregorski et al. 2004, section 3.1) predicts a point from its split edge and
+// codes the delta; lead-1 and the adaptive coder code those deltas with contexts from the page's
+// previous deltas only. This coder predicts a point of scale h from all of its corners (the points
+// at +-h on its odd axes: they lie on the lattice of 2h, so they are coarser than every point of
+// scale h) and codes the residual with contexts from those corners' values (their range) and from
+// the residuals of the point's three neighbours of its own class at -2h that lie in the same page.
+// A page therefore decodes given the values of the coarser points its points' corners name: the
+// points that reconstructing any of its points reads anyway (random access, leb_reader.h, decodes
+// them through their own pages). Nothing of a page depends on another page of its own scale.
+//
+// The values are the samples themselves (8 or 16 bits), not the paper's deltas: a stream of this
+// coder stores the data channel alone (its gradients, if any, are derived: FORMAT.md, header byte
+// 23). The decisions per residual are delta_decisions.h's, with this coder's contexts.
+//
+// The decoder is for untrusted bytes: a page whose first byte is not 0, that ends inside a value,
+// holds a residual of +2^(b-1), or has bytes left after its last value throws StreamError with the
+// byte offset and the page's name.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "reference/common/volume.h"
+#include "reference/leb/delta_decisions.h"
+#include "reference/leb/hz_order.h"
+#include "reference/leb/prediction.h"
+
+namespace voxref::ref {
+
+inline constexpr int kContextRangeBuckets = 8;   // the corners' range, bucketed (contextRangeBucket)
+inline constexpr int kContextNeighbourSums = 8;  // the neighbours' symbols summed, capped at 7
+inline constexpr int kContextSignContexts = 7;   // the neighbours' signs summed, clamped to [-3, 3]
+inline constexpr int kContextContexts = kContextRangeBuckets * kContextNeighbourSums;
+
+// The models of one page, all at their initial state (made afresh for every page), as
+// codeDeltaDecisions takes them: context = neighbour sum x 8 + range bucket, sign context =
+// neighbours' sign sum + 3.
+class ContextModels {
+ public:
+  explicit ContextModels(int valueBits);  // throws std::invalid_argument unless 8 or 16
+  int valueBits() const { return valueBits_; }
+  int treeDepth() const { return treeDepth_; }
+  BitModel& zero(int context) { return zero_[static_cast<std::size_t>(context)]; }
+  BitModel& tree(int context, int node) { return tree_[static_cast<std::size_t>(context) * 16 + node]; }
+  BitModel& sign(int signContext, int symbol) { return sign_[static_cast<std::size_t>(signContext) * 17 + symbol]; }
+  BitModel& mantissa(int signContext, int symbol, int prefix) {
+    return mantissa_[(static_cast<std::size_t>(signContext) * 17 + symbol) * 3 + prefix];
+  }
+
+ private:
+  int valueBits_, treeDepth_;
+  std::vector<BitModel> zero_, tree_, sign_, mantissa_;
+};
+
+// 0 for a range of 0, else min(7, 1 + ceil(log2 range)): 1, 2, 3..4, 5..8, 9..16, 17..32, > 32.
+inline int contextRangeBucket(std::int32_t range) {
+  if (range <= 0) return 0;
+  return std::min(kContextRangeBuckets - 1,
+                  1 + static_cast<int>(std::bit_width(static_cast<std::uint32_t>(range - 1))));
+}
+
+// A point's prediction from its corners and the bucket of their range.
+struct CornerPrediction {
+  std::int32_t prediction = 0;
+  int rangeBucket = 0;
+};
+// The corners of p (scale 2^scaleLog2, odd axes oddAxes, not a root corner): the 2^n points at +-h
+// on its n odd axes, those inside the volume `dims` (the one at -h on every odd axis always is);
+// valueOf(q) gives a corner's value. prediction = floor((sum + floor(m / 2)) / m) over the m
+// corners inside, range = their maximum - their minimum.
+template <class ValueOf>
+CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned oddAxes, const Dims3& dims,
+                                  ValueOf&& valueOf) {
+  int axes[3], n = 0;
+  for (int a = 0; a < 3; ++a)
+    if ((oddAxes >> a) & 1u) axes[n++] = a;
+  const int h = 1 << scaleLog2;
+  std::int64_t sum = 0;
+  std::int32_t lo = 0, hi = 0;
+  int m = 0;
+  for (int c = 0; c < (1 << n); ++c) {
+    GridPoint q = p;
+    bool inside = true;
+    for (int i = 0; i < n; ++i) {
+      q[axes[i]] += ((c >> i) & 1) ? h : -h;
+      inside = inside && q[axes[i]] < dims[axes[i]];
+    }
+    if (!inside) continue;
+    const std::int32_t v = valueOf(q);
+    sum += v;
+    lo = m == 0 ? v : std::min(lo, v);
+    hi = m == 0 ? v : std::max(hi, v);
+    ++m;
+  }
+  return {static_cast<std::int32_t>((sum + m / 2) / m), contextRangeBucket(hi - lo)};
+}
+
+// What one page's coding keeps between its points: the models, and the symbol and sign of every
+// residual coded so far, by the point's place in the page (for the neighbours' contexts).
+class ContextPageState {
+ public:
+  ContextPageState(int valueBits, int pageBits, std::uint64_t page);
+  ContextModels& models() { return models_; }
+  std::uint64_t pageBegin() const { return begin_; }
+  struct Contexts {
+    int context = 0, signContext = 3;
+  };
+  // The contexts of p (class c, not a root corner) whose corners' range falls in rangeBucket: its
+  // neighbours q = p - 2h on each axis (q_a >= 0) whose index lies in this page count with the
+  // residual recorded for them (none yet: 0).
+  Contexts contexts(const HzOrder& order, const GridPoint& p, const LebPointClass& c, int rangeBucket) const;
+  void record(std::uint64_t h, int symbol, bool negative);
+
+ private:
+  ContextModels models_;
+  std::uint64_t begin_;
+  std::vector<std::int8_t> signedSymbol_;  // by place in the page: symbol, negated for a negative residual
+};
+
+// The context and sign context of a point: a root corner's (prediction 0, no corners, no
+// neighbours), else from its corners and neighbours; and its prediction.
+struct ContextPoint {
+  std::int32_t prediction = 0;
+  ContextPageState::Contexts contexts;
+};
+template <class ValueOf>
+ContextPoint contextPoint(const HzOrder& order, const Dims3& dims, const ContextPageState& state, const GridPoint& p,
+                          int level, int scaleLog2, unsigned oddAxes, ValueOf&& valueOf) {
+  if (level < 0) return {};
+  const CornerPrediction cp = cornerPrediction(p, scaleLog2, oddAxes, dims, valueOf);
+  const LebPointClass c{level, scaleLog2, std::popcount(oddAxes) - 1, oddAxes};
+  return {cp.prediction, state.contexts(order, p, c, cp.rangeBucket)};
+}
+
+// Codes one value with its point's prediction and contexts (the encoder's step).
+void encodeContextValue(RangeEncoder& out, ContextPageState& state, std::uint64_t h, const ContextPoint& point,
+                        std::int32_t value);
+
+// The bytes of one page: the values of its points inside the volume `dims`, in hierarchical order;
+// valueOf(q) gives the value of any point of the volume (the encoder has them all).
+template <class ValueOf>
+std::string encodeContextPage(const HzOrder& order, const Dims3& dims, int valueBits, int pageBits, std::uint64_t page,
+                              ValueOf&& valueOf) {
+  ContextPageState state(valueBits, pageBits, page);
+  RangeEncoder out;
+  order.forEachInside(dims, page << pageBits, (page + 1) << pageBits,
+                      [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned oddAxes) {
+                        const ContextPoint cp = contextPoint(order, dims, state, p, level, scaleLog2, oddAxes, valueOf);
+                        encodeContextValue(out, state, h, cp, valueOf(p));
+                      });
+  return out.finish();
+}
+
+// Reads the values of one page.
+class ContextPageReader {
+ public:
+  // `streamOffset` is the offset of the page's first byte in the stream and `what` names the page
+  // ("data page 17"): both go into the StreamError messages. The page's bytes must outlive the
+  // reader. Throws StreamError for a page shorter than 5 bytes or whose first byte is not 0.
+  ContextPageReader(std::string_view bytes, int valueBits, int pageBits, std::uint64_t page, std::size_t streamOffset,
+                    std::string what);
+  // Decodes the page's points inside the volume in hierarchical order: valueOf(q) gives the value
+  // of a corner (coarser than the point, so decoded before it: in an earlier page, or stored in
+  // this one), store(h, p, value) takes each value. Returns how many points it decoded. Throws
+  // StreamError (above), and after the last point unless the bytes are used up exactly.
+  template <class ValueOf, class Store>
+  std::uint64_t decode(const HzOrder& order, const Dims3& dims, ValueOf&& valueOf, Store&& store) {
+    std::uint64_t points = 0;
+    order.forEachInside(dims, state_.pageBegin(), state_.pageBegin() + (std::uint64_t{1} << pageBits_),
+                        [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned oddAxes) {
+                          const ContextPoint cp =
+                              contextPoint(order, dims, state_, p, level, scaleLog2, oddAxes, valueOf);
+                          store(h, p, next(h, cp));
+                          ++points;
+                        });
+    finish();
+    return points;
+  }
+
+ private:
+  std::int32_t next(std::uint64_t h, const ContextPoint& point);
+  void finish() const;
+  [[noreturn]] void fail(const std::string& detail) const;
+  ContextPageState state_;
+  RangeDecoder in_;
+  int pageBits_;
+  std::size_t pageBytes_, streamOffset_;
+  std::string what_;
+  std::uint64_t read_ = 0;
+};
+
+}  // namespace voxref::ref

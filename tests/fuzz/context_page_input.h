@@ -1,0 +1,53 @@
+// The input layout of context_page_fuzz (tests/fuzz/context_page_fuzz.cpp), shared with the seed
+// maker (make_fuzz_seeds context_page) so that its seeds are pages of the volume the target builds.
+//
+// Byte 0 selects the sample bits (bit 0: 16, else 8), bytes 1-3 the extents (1 + byte mod 12
+// each), byte 4 the page bits (4 + byte mod 3), byte 5 which of the volume's stored pages (those
+// holding one of its points, by byte mod their count) the rest of the input is. The volume's
+// samples are a fixed smooth field.
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "reference/leb/hz_order.h"
+#include "reference/leb/leb_padding.h"
+
+namespace voxref::fuzz {
+
+struct ContextPageInput {
+  int bits = 8, pageBits = 4;
+  ref::Dims3 dims{1, 1, 1};
+  std::uint64_t page = 0;
+  std::vector<std::int32_t> volume;  // x fastest
+};
+
+inline constexpr std::size_t kContextPageHeader = 6;
+
+inline ContextPageInput contextPageInput(const ref::HzOrder& order, const std::uint8_t* header) {
+  ContextPageInput in;
+  in.bits = (header[0] & 1) ? 16 : 8;
+  in.dims = {1 + header[1] % 12, 1 + header[2] % 12, 1 + header[3] % 12};
+  in.pageBits = 4 + header[4] % 3;
+  std::vector<std::uint64_t> pages;
+  order.forEachInside(in.dims, 0, order.size(), [&](std::uint64_t h, const ref::GridPoint&, int, int, unsigned) {
+    if (pages.empty() || pages.back() != h >> in.pageBits) pages.push_back(h >> in.pageBits);
+  });
+  in.page = pages[header[5] % pages.size()];
+  in.volume.resize(static_cast<std::size_t>(in.dims[0] * in.dims[1] * in.dims[2]));
+  for (int z = 0; z < in.dims[2]; ++z)
+    for (int y = 0; y < in.dims[1]; ++y)
+      for (int x = 0; x < in.dims[0]; ++x)
+        in.volume[ref::volumeIndex({x, y, z}, in.dims)] =
+            static_cast<std::int32_t>(((1 << in.bits) - 1) * (0.5 + 0.5 * std::sin(0.4 * x - 0.3 * y + 0.2 * z)));
+  return in;
+}
+
+// The grid the header's extents lie in.
+inline ref::LebGrid contextPageGrid(const std::uint8_t* header) {
+  return ref::lebGridCovering({1 + header[1] % 12, 1 + header[2] % 12, 1 + header[3] % 12});
+}
+
+}  // namespace voxref::fuzz
