@@ -20,8 +20,8 @@ ContextModels::ContextModels(int valueBits) : valueBits_(valueBits), treeDepth_(
 ContextPageState::ContextPageState(int valueBits, int pageBits, std::uint64_t page)
     : models_(valueBits), begin_(page << pageBits), signedSymbol_(std::size_t{1} << pageBits, 0) {}
 
-ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, const GridPoint& p, const LebPointClass& c,
-                                                      int rangeBucket) const {
+ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, std::uint64_t h, const GridPoint& p,
+                                                      const LebPointClass& c, int rangeBucket) const {
   // FORMAT.md, "Context pages": the neighbours of p's own class at -2h on each axis. They are of
   // p's level and precede it in the hierarchical order; those of an earlier page do not count, so
   // that a page depends on no other page of its scale.
@@ -29,11 +29,9 @@ ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, cons
   int symbols = 0, signs = 0;
   for (int a = 0; a < 3; ++a) {
     if (p[a] < step) continue;
-    GridPoint q = p;
-    q[a] -= step;
-    const std::uint64_t h = order.index(q, c);
-    if (h < begin_ || h - begin_ >= signedSymbol_.size()) continue;
-    const int s = signedSymbol_[static_cast<std::size_t>(h - begin_)];
+    const std::uint64_t hq = order.indexBelow(h, p, c, a);
+    if (hq < begin_ || hq - begin_ >= signedSymbol_.size()) continue;
+    const int s = signedSymbol_[static_cast<std::size_t>(hq - begin_)];
     symbols += s < 0 ? -s : s;
     signs += (s > 0) - (s < 0);
   }

@@ -112,10 +112,11 @@ class ContextPageState {
   struct Contexts {
     int context = 0, signContext = 3;
   };
-  // The contexts of p (class c, not a root corner) whose corners' range falls in rangeBucket: its
+  // The contexts of p (index h, class c, not a root corner) whose corners' range falls in rangeBucket: its
   // neighbours q = p - 2h on each axis (q_a >= 0) whose index lies in this page count with the
   // residual recorded for them (none yet: 0).
-  Contexts contexts(const HzOrder& order, const GridPoint& p, const LebPointClass& c, int rangeBucket) const;
+  Contexts contexts(const HzOrder& order, std::uint64_t h, const GridPoint& p, const LebPointClass& c,
+                    int rangeBucket) const;
   void record(std::uint64_t h, int symbol, bool negative);
 
  private:
@@ -131,12 +132,12 @@ struct ContextPoint {
   ContextPageState::Contexts contexts;
 };
 template <class ValueOf>
-ContextPoint contextPoint(const HzOrder& order, const Dims3& dims, const ContextPageState& state, const GridPoint& p,
-                          int level, int scaleLog2, unsigned oddAxes, ValueOf&& valueOf) {
+ContextPoint contextPoint(const HzOrder& order, const Dims3& dims, const ContextPageState& state, std::uint64_t h,
+                          const GridPoint& p, int level, int scaleLog2, unsigned oddAxes, ValueOf&& valueOf) {
   if (level < 0) return {};
   const CornerPrediction cp = cornerPrediction(p, scaleLog2, oddAxes, dims, valueOf);
   const LebPointClass c{level, scaleLog2, std::popcount(oddAxes) - 1, oddAxes};
-  return {cp.prediction, state.contexts(order, p, c, cp.rangeBucket)};
+  return {cp.prediction, state.contexts(order, h, p, c, cp.rangeBucket)};
 }
 
 // Codes one value with its point's prediction and contexts (the encoder's step).
@@ -152,7 +153,8 @@ std::string encodeContextPage(const HzOrder& order, const Dims3& dims, int value
   RangeEncoder out;
   order.forEachInside(dims, page << pageBits, (page + 1) << pageBits,
                       [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned oddAxes) {
-                        const ContextPoint cp = contextPoint(order, dims, state, p, level, scaleLog2, oddAxes, valueOf);
+                        const ContextPoint cp =
+                            contextPoint(order, dims, state, h, p, level, scaleLog2, oddAxes, valueOf);
                         encodeContextValue(out, state, h, cp, valueOf(p));
                       });
   return out.finish();
@@ -176,7 +178,7 @@ class ContextPageReader {
     order.forEachInside(dims, state_.pageBegin(), state_.pageBegin() + (std::uint64_t{1} << pageBits_),
                         [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned oddAxes) {
                           const ContextPoint cp =
-                              contextPoint(order, dims, state_, p, level, scaleLog2, oddAxes, valueOf);
+                              contextPoint(order, dims, state_, h, p, level, scaleLog2, oddAxes, valueOf);
                           store(h, p, next(h, cp));
                           ++points;
                         });

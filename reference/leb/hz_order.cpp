@@ -86,6 +86,32 @@ std::uint64_t HzOrder::index(const GridPoint& p, const LebPointClass& c) const {
          static_cast<std::uint64_t>(it - block.orientations.begin());
 }
 
+std::uint64_t HzOrder::indexBelow(std::uint64_t h, const GridPoint& p, const LebPointClass& c, int axis) const {
+  const Level& lv = levels_[static_cast<std::size_t>(c.level)];
+  const int shift = lv.scaleLog2 + 1, n = 1 << lv.cellBits;
+  unsigned boundary = 0;
+  int position = 0;  // the axis's place among the block's free axes (mortonEncode's order)
+  for (int a = 0; a < 3; ++a) {
+    if ((p[static_cast<std::size_t>(a)] >> shift) == n)
+      boundary |= 1u << a;
+    else if (a < axis)
+      ++position;
+  }
+  if ((boundary >> axis) & 1u) {  // q leaves the far boundary's block
+    GridPoint q = p;
+    q[static_cast<std::size_t>(axis)] -= 1 << shift;
+    return index(q, c);
+  }
+  const Block& block = lv.blocks[boundary];
+  const std::uint64_t orientations = block.orientations.size(), at = h - block.begin;
+  const std::uint64_t code = at / orientations, orientation = at % orientations;
+  // The bits of the axis's coordinate in the code: every freeAxes-th bit from `position`.
+  static constexpr std::uint64_t kEvery[4] = {0, ~std::uint64_t{0}, 0x5555555555555555ULL, 0x9249249249249249ULL};
+  const std::uint64_t mask = kEvery[block.freeAxes] << position;
+  const std::uint64_t below = (((code & mask) - (std::uint64_t{1} << position)) & mask) | (code & ~mask);
+  return block.begin + below * orientations + orientation;
+}
+
 GridPoint HzOrder::point(std::uint64_t h) const {
   if (h >= size())
     throw std::out_of_range("hierarchical index " + std::to_string(h) + " is outside the grid of " +

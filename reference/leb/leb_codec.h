@@ -108,7 +108,9 @@ struct LebDecoded {
 // Memory: at most lebDecodeMemoryBytes(stream), plus one small reader per open page: the volume
 // (2 bytes per sample) and its gradients (3 bytes per sample), plus the shells of padding that
 // predictions reach, one a channel, held together (leb_padding.h; none for a volume that fills its
-// grid): a stream's data and gradients are reconstructed in one walk.
+// grid): a stream's data and gradients are reconstructed in one walk. A stream of the context
+// coder (version 4) holds no shell, and each worker one page's table of 2^pageBits bytes instead of
+// the open readers (context_codec.h).
 // Nothing is proportional to the grid: a 513x1x1 stream decodes in a few kilobytes. A caller that
 // decodes untrusted streams compares lebDecodeMemoryBytes with what it may allocate first (voxref
 // decode does). parseLebStream has already refused streams too short for their volume.

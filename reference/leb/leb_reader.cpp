@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "reference/leb/context_codec.h"
 #include "reference/leb/context_value_coder.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_page.h"
@@ -151,13 +152,16 @@ std::vector<std::int16_t> LebReader::decodeContextPage(const LebChannel& c, std:
   ContextPageReader reader(bytes.bytes, c.valueBits, stream_->pageBits, page, bytes.offset, bytes.name);
   const std::uint64_t begin = page << stream_->pageBits;
   std::vector<std::int16_t> values(std::size_t{1} << stream_->pageBits, 0);
+  // A corner is coarser than its point: decoded before it in this page, or in an earlier page
+  // (through the cache, recursively). Only a page that holds a coarser scale than its last point's
+  // can hold corners of its points (contextPagesNeededBelow names the page itself then).
+  const bool cornersInPage = contextPagesNeededBelow(order_, stream_->pageBits, page) == page;
   reader.decode(
       order_, stream_->dims,
       [&](const GridPoint& q) -> std::int32_t {
-        // A corner is coarser than the point: decoded before it in this page, or in an earlier page
-        // (through the cache, recursively).
-        const std::uint64_t hq = order_.index(q);
-        if (hq >= begin) return static_cast<std::uint16_t>(values[static_cast<std::size_t>(hq - begin)]);
+        if (cornersInPage)
+          if (const std::uint64_t hq = order_.index(q); hq >= begin)
+            return static_cast<std::uint16_t>(values[static_cast<std::size_t>(hq - begin)]);
         return valueAt(1u, q).v[0];
       },
       [&](std::uint64_t h, const GridPoint&, std::int32_t v) {

@@ -43,6 +43,15 @@ TEST_P(HzOrderOnGrid, IsABijectionWithLevelsFirstAndCoarserPredictors) {
       const SplitEdge e = splitEdge(g, p);
       ASSERT_LT(order.index(e.a), h);
       ASSERT_LT(order.index(e.b), h);
+      // The index of p - 2h on each axis, from p's (the context coder's neighbours), against the
+      // closed form of the point itself.
+      for (int a = 0; a < 3; ++a) {
+        const int step = 2 << pc.scaleLog2;
+        if (p[static_cast<std::size_t>(a)] < step) continue;
+        GridPoint q = p;
+        q[static_cast<std::size_t>(a)] -= step;
+        ASSERT_EQ(order.indexBelow(h, p, pc, a), order.index(q)) << "axis " << a << " from index " << h;
+      }
     }
   }
   EXPECT_TRUE(cursor.done());
@@ -50,7 +59,7 @@ TEST_P(HzOrderOnGrid, IsABijectionWithLevelsFirstAndCoarserPredictors) {
   EXPECT_THROW(order.point(order.size()), std::out_of_range);
 }
 
-INSTANTIATE_TEST_SUITE_P(K, HzOrderOnGrid, ::testing::Values(0, 1, 2, 3, 4, 5));
+INSTANTIATE_TEST_SUITE_P(K, HzOrderOnGrid, ::testing::Values(0, 1, 2, 3, 4, 5, 6));
 
 TEST(HzOrder, InteriorOfALevelIsZOrderOverCells) {
   // Level 3 of k = 3 (scale 2, phase 2): cube centres at odd multiples of 2, cells of side 4,
