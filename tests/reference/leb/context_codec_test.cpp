@@ -1,6 +1,6 @@
-// Streams of the context coder (version 4; reference/leb/context_codec.h, FORMAT.md "Context
-// pages"): round trips through the whole-volume decoder and random access, the same bytes for
-// every thread count, and the refusals of streams whose page table or shape is wrong.
+// Streams of the context coder (version 4; reference/leb/context_codec.h, reference/leb/FORMAT.md,
+// "Context pages"): round trips through the whole-volume decoder and random access, the same bytes
+// for every thread count, and the refusals of streams whose page table or shape is wrong.
 #include "reference/leb/context_codec.h"
 
 #include <gtest/gtest.h>
@@ -125,7 +125,8 @@ TEST(ContextCodec, APageNeedsOnlyThePagesItsWaveFollows) {
             for (int dx = -step; dx <= step; dx += step) {
               const GridPoint q{p[0] + dx, p[1] + dy, p[2] + dz};
               if (q[0] < 0 || q[1] < 0 || q[2] < 0 || !insideVolume(q, dims)) continue;
-              // A corner: coordinates multiples of 2h (FORMAT.md), reached on the odd axes only.
+              // A corner: coordinates multiples of 2h (reference/leb/FORMAT.md), reached on the odd
+              // axes only.
               if (q[0] % (2 * step) || q[1] % (2 * step) || q[2] % (2 * step)) continue;
               const std::uint64_t qp = order.index(q) >> pageBits;
               ASSERT_TRUE(qp == page || qp < below) << "page " << page << " needs page " << qp << ", below " << below

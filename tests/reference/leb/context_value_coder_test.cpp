@@ -1,6 +1,6 @@
-// The context coder's pieces (reference/leb/context_value_coder.h; FORMAT.md, "Context pages"):
-// the geometry its decoder relies on, checked on every point of small grids, its prediction
-// against a brute-force one, and its page reader's refusals of corrupt bytes.
+// The context coder's pieces (reference/leb/context_value_coder.h; reference/leb/FORMAT.md,
+// "Context pages"): the geometry its decoder relies on, checked on every point of small grids, its
+// prediction against a brute-force one, and its page reader's refusals of corrupt bytes.
 #include "reference/leb/context_value_coder.h"
 
 #include <gtest/gtest.h>
@@ -26,8 +26,8 @@ void forEachGridPoint(const HzOrder& order, F&& f) {
       LebPointClass{c.level(), c.scaleLog2(), std::max(0, std::popcount(c.oddAxes()) - 1), c.oddAxes()});
 }
 
-// FORMAT.md: a neighbour p - 2h on an axis is of p's class and precedes p; every corner precedes
-// the first level of p's scale (the whole-volume decoder's waves rest on it).
+// reference/leb/FORMAT.md: a neighbour p - 2h on an axis is of p's class and precedes p; every
+// corner precedes the first level of p's scale (the whole-volume decoder's waves rest on it).
 TEST(ContextValueCoder, NeighboursShareTheClassAndCornersAreCoarser) {
   for (int k = 1; k <= 6; ++k) {
     const LebGrid grid{k};
@@ -103,7 +103,7 @@ TEST(ContextValueCoder, TheCornersPredictionIsTheRoundedMeanOfTheCornersInside) 
   EXPECT_EQ(checked, dims[0] * dims[1] * dims[2] - 1);  // all but the root corner (0, 0, 0)
 }
 
-// FORMAT.md's table of the range's buckets.
+// reference/leb/FORMAT.md's table of the range's buckets.
 TEST(ContextValueCoder, TheRangeBucketsAreTheFormatsTable) {
   const std::pair<int, int> table[] = {{0, 0}, {1, 1},  {2, 2},  {3, 3},  {4, 3},  {5, 4},   {8, 4},
                                        {9, 5}, {16, 5}, {17, 6}, {32, 6}, {33, 7}, {255, 7}, {65535, 7}};
