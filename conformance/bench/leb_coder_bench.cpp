@@ -329,6 +329,7 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
                  ? f[0].coders[i].coder
                  : goalCoderName(true) + " (data), " + goalCoderName(false) + " (gradients), on pieces of 2^" +
                        std::to_string(kPieceSampleBits) + " samples each on its own";
+    if (contextRow(i)) v.name += " + gradients derived: none stored";  // not a coder of the gradients
     v.error = 0.0;
     const Timing& a = f[0].coders[i].decode;
     const Timing& b = f[1].coders[i].decode;

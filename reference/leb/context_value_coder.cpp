@@ -25,12 +25,11 @@ ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, std:
   // FORMAT.md, "Context pages": the neighbours of p's own class at -2h on each axis. They are of
   // p's level and precede it in the hierarchical order; those of an earlier page do not count, so
   // that a page depends on no other page of its scale.
-  const int step = 2 << c.scaleLog2;
+  std::uint64_t below[3];
+  order.indicesBelow(h, p, c, below);
   int symbols = 0, signs = 0;
-  for (int a = 0; a < 3; ++a) {
-    if (p[a] < step) continue;
-    const std::uint64_t hq = order.indexBelow(h, p, c, a);
-    if (hq < begin_ || hq - begin_ >= signedSymbol_.size()) continue;
+  for (const std::uint64_t hq : below) {
+    if (hq == HzOrder::kNoIndex || hq < begin_ || hq - begin_ >= signedSymbol_.size()) continue;
     const int s = signedSymbol_[static_cast<std::size_t>(hq - begin_)];
     symbols += s < 0 ? -s : s;
     signs += (s > 0) - (s < 0);

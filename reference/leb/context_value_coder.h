@@ -78,21 +78,21 @@ struct CornerPrediction {
 template <class ValueOf>
 CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned oddAxes, const Dims3& dims,
                                   ValueOf&& valueOf) {
-  int axes[3], n = 0;
-  for (int a = 0; a < 3; ++a)
-    if ((oddAxes >> a) & 1u) axes[n++] = a;
   const int h = 1 << scaleLog2;
+  int axes[3], n = 0;
+  unsigned plusInside = 0;  // bit i: the corner at +h on odd axis i lies inside the volume
+  for (int a = 0; a < 3; ++a)
+    if ((oddAxes >> a) & 1u) {
+      if (p[a] + h < dims[a]) plusInside |= 1u << n;
+      axes[n++] = a;
+    }
   std::int64_t sum = 0;
   std::int32_t lo = 0, hi = 0;
   int m = 0;
-  for (int c = 0; c < (1 << n); ++c) {
+  for (unsigned c = 0; c < (1u << n); ++c) {
+    if (c & ~plusInside) continue;  // +h on an axis where that leaves the volume
     GridPoint q = p;
-    bool inside = true;
-    for (int i = 0; i < n; ++i) {
-      q[axes[i]] += ((c >> i) & 1) ? h : -h;
-      inside = inside && q[axes[i]] < dims[axes[i]];
-    }
-    if (!inside) continue;
+    for (int i = 0; i < n; ++i) q[axes[i]] += ((c >> i) & 1u) ? h : -h;
     const std::int32_t v = valueOf(q);
     sum += v;
     lo = m == 0 ? v : std::min(lo, v);

@@ -86,30 +86,36 @@ std::uint64_t HzOrder::index(const GridPoint& p, const LebPointClass& c) const {
          static_cast<std::uint64_t>(it - block.orientations.begin());
 }
 
-std::uint64_t HzOrder::indexBelow(std::uint64_t h, const GridPoint& p, const LebPointClass& c, int axis) const {
+void HzOrder::indicesBelow(std::uint64_t h, const GridPoint& p, const LebPointClass& c, std::uint64_t below[3]) const {
   const Level& lv = levels_[static_cast<std::size_t>(c.level)];
   const int shift = lv.scaleLog2 + 1, n = 1 << lv.cellBits;
   unsigned boundary = 0;
-  int position = 0;  // the axis's place among the block's free axes (mortonEncode's order)
-  for (int a = 0; a < 3; ++a) {
-    if ((p[static_cast<std::size_t>(a)] >> shift) == n)
-      boundary |= 1u << a;
-    else if (a < axis)
-      ++position;
-  }
-  if ((boundary >> axis) & 1u) {  // q leaves the far boundary's block
-    GridPoint q = p;
-    q[static_cast<std::size_t>(axis)] -= 1 << shift;
-    return index(q, c);
-  }
+  for (int a = 0; a < 3; ++a)
+    if ((p[static_cast<std::size_t>(a)] >> shift) == n) boundary |= 1u << a;
   const Block& block = lv.blocks[boundary];
   const std::uint64_t orientations = block.orientations.size(), at = h - block.begin;
-  const std::uint64_t code = at / orientations, orientation = at % orientations;
-  // The bits of the axis's coordinate in the code: every freeAxes-th bit from `position`.
+  // A block's cells hold 1, 2 or 3 points: divisions by constants (multiplications).
+  const std::uint64_t code = orientations == 1 ? at : orientations == 2 ? at / 2 : at / 3;
+  const std::uint64_t orientation = at - code * orientations;
+  // The bits of a free axis's coordinate in the code: every freeAxes-th bit from its place among
+  // the block's free axes (mortonEncode's order).
   static constexpr std::uint64_t kEvery[4] = {0, ~std::uint64_t{0}, 0x5555555555555555ULL, 0x9249249249249249ULL};
-  const std::uint64_t mask = kEvery[block.freeAxes] << position;
-  const std::uint64_t below = (((code & mask) - (std::uint64_t{1} << position)) & mask) | (code & ~mask);
-  return block.begin + below * orientations + orientation;
+  int position = 0;
+  for (int a = 0; a < 3; ++a) {
+    const bool free = ((boundary >> a) & 1u) == 0;
+    if (p[static_cast<std::size_t>(a)] >> shift == 0) {  // p[a] < 2h
+      below[a] = kNoIndex;
+    } else if (!free) {  // q leaves the far boundary's block
+      GridPoint q = p;
+      q[static_cast<std::size_t>(a)] -= 1 << shift;
+      below[a] = index(q, c);
+    } else {
+      const std::uint64_t mask = kEvery[block.freeAxes] << position;
+      const std::uint64_t down = (((code & mask) - (std::uint64_t{1} << position)) & mask) | (code & ~mask);
+      below[a] = block.begin + down * orientations + orientation;
+    }
+    if (free) ++position;
+  }
 }
 
 GridPoint HzOrder::point(std::uint64_t h) const {

@@ -44,11 +44,13 @@ class HzOrder {
   // index(p) given p's class (classifyPoint(grid, p), which the caller has already), without
   // classifying p again or checking that it lies inside the grid.
   std::uint64_t index(const GridPoint& p, const LebPointClass& c) const;
-  // The index of q = p - 2h on `axis` (h p's scale), given p's index h and class c (not a root
-  // corner) and p[axis] >= 2h: q is of p's class, so where both lie in one block q's cell is p's one
-  // step down on that axis, a decrement of the Morton code's bits of that axis (no encoding);
-  // otherwise index(q, c). Equal to index(q) (hz_order_test checks every point of small grids).
-  std::uint64_t indexBelow(std::uint64_t h, const GridPoint& p, const LebPointClass& c, int axis) const;
+  // The indices of q = p - 2h on each axis a (h p's scale), given p's index h and class c (not a
+  // root corner), into below[a]; kNoIndex where p[a] < 2h (no such point). q is of p's class, so
+  // where both lie in one block q's cell is p's one step down on that axis, a decrement of the
+  // Morton code's bits of that axis (no encoding); otherwise index(q, c). Equal to index(q)
+  // (hz_order_test checks every point and axis of small grids).
+  static constexpr std::uint64_t kNoIndex = ~std::uint64_t{0};
+  void indicesBelow(std::uint64_t h, const GridPoint& p, const LebPointClass& c, std::uint64_t below[3]) const;
 
   // Calls f(h, p, level, scaleLog2, oddAxes) for every grid point p with index h in [begin, end)
   // that lies inside the box [0, dims) (the volume), in increasing h, and for no other point: a
