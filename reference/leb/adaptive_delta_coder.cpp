@@ -12,24 +12,20 @@ namespace {
 
 constexpr int kContextsPerComponent = (kAdaptiveSymbolCap + 1) * (kAdaptiveSymbolCap + 1);
 
-void checkShape(int valueBits, int components) {
+// The value bits, once they and the components are checked (before any model is allocated).
+int checkedValueBits(int valueBits, int components) {
   if (valueBits != 8 && valueBits != 16)
     throw std::invalid_argument("adaptive delta coder: value bits must be 8 or 16, got " + std::to_string(valueBits));
   if (components != 1 && components != 3)
     throw std::invalid_argument("adaptive delta coder: components must be 1 or 3, got " + std::to_string(components));
+  return valueBits;
 }
 
 }  // namespace
 
 AdaptiveDeltaModels::AdaptiveDeltaModels(int valueBits, int components)
-    : valueBits_(valueBits), components_(components), treeDepth_(valueBits == 16 ? 4 : 3) {
-  checkShape(valueBits, components);
-  const auto contexts = static_cast<std::size_t>(components * kContextsPerComponent);
-  zero_.resize(contexts);
-  tree_.resize(contexts * 16);
-  sign_.resize(static_cast<std::size_t>(components) * 17);
-  mantissa_.resize(static_cast<std::size_t>(components) * 17 * 3);
-}
+    : DeltaDecisionModels(checkedValueBits(valueBits, components), components * kContextsPerComponent, components),
+      components_(components) {}
 
 int AdaptiveContext::next() const {
   const int lag = components_ == 1 ? 2 : components_;

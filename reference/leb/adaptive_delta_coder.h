@@ -28,6 +28,7 @@
 #include <string_view>
 #include <vector>
 
+#include "reference/leb/delta_decisions.h"
 #include "reference/leb/range_coder.h"
 
 namespace voxref::ref {
@@ -39,24 +40,16 @@ inline constexpr int kAdaptiveSymbolCap = 7;
 // byte. The stream parser refuses payloads too short for their volume by it (leb_stream.cpp).
 inline constexpr std::uint64_t kAdaptiveDeltasPerByteBound = 16384;
 
-// The models of one page, all at their initial state: made afresh for every page.
-class AdaptiveDeltaModels {
+// The models of one page (delta_decisions.h), all at their initial state: made afresh for every
+// page. 64 contexts a component for the zero flag and the symbol; the component is the sign's and
+// the mantissa's context.
+class AdaptiveDeltaModels : public DeltaDecisionModels {
  public:
   AdaptiveDeltaModels(int valueBits, int components);
-  int valueBits() const { return valueBits_; }
   int components() const { return components_; }
-  int treeDepth() const { return treeDepth_; }
-  // The models of the context of delta i, from the symbols before it.
-  BitModel& zero(int context) { return zero_[static_cast<std::size_t>(context)]; }
-  BitModel& tree(int context, int node) { return tree_[static_cast<std::size_t>(context) * 16 + node]; }
-  BitModel& sign(int component, int symbol) { return sign_[static_cast<std::size_t>(component) * 17 + symbol]; }
-  BitModel& mantissa(int component, int symbol, int prefix) {
-    return mantissa_[(static_cast<std::size_t>(component) * 17 + symbol) * 3 + prefix];
-  }
 
  private:
-  int valueBits_, components_, treeDepth_;
-  std::vector<BitModel> zero_, tree_, sign_, mantissa_;
+  int components_;
 };
 
 // Tracks the symbols of the deltas coded so far and gives the context of the next one.

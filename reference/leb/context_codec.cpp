@@ -12,15 +12,6 @@
 namespace voxref::ref {
 namespace {
 
-// A span's samples as f takes them: a pointer to its 8- or 16-bit array.
-template <class Span, class F>
-void withSampleArray(const Span& v, F&& f) {
-  if (v.data8)
-    f(v.data8);
-  else
-    f(v.data16);
-}
-
 // Pages a batch: what the encoder holds coded at once, and what a decoder's window lets through
 // between two looks.
 int batchPages(int threads) { return 4 * workerCount(threads); }
@@ -52,7 +43,7 @@ std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, i
     coded.assign(static_cast<std::size_t>(end - first), {});
     parallelFor(end - first, threads, [&](int i) {
       const std::uint64_t page = table.storedPage[static_cast<std::size_t>(first + i)];
-      withSampleArray(v, [&](const auto* samples) {
+      withLebSamples(v, [&](const auto* samples) {
         coded[static_cast<std::size_t>(i)] = encodeContextPage(
             order, v.dims, v.sampleBits, pageBits, page,
             [&](const GridPoint& q) { return static_cast<std::int32_t>(samples[volumeIndex(q, v.dims)]); });
@@ -93,8 +84,8 @@ void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVol
     const std::uint64_t to = j < stored.size() ? stored[j] : s.pageCount();
     if (order.countInside(s.dims, from << pb, to << pb) != 0)
       for (std::uint64_t page = from; page < to; ++page)
-        if (order.countInside(s.dims, page << pb, (page + 1) << pb) != 0) throw pageNotStored(c, page);
-    if (j < stored.size() && order.countInside(s.dims, to << pb, (to + 1) << pb) == 0) throw pageWithoutPoints(c, to);
+        if (insidePointsOfPage(order, s.dims, pb, page) != 0) throw pageNotStored(c, page);
+    if (j < stored.size() && insidePointsOfPage(order, s.dims, pb, to) == 0) throw pageWithoutPoints(c, to);
     from = to + 1;
   }
   std::vector<std::uint64_t> needed(stored.size());
@@ -102,7 +93,7 @@ void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVol
   const auto decodePage = [&](std::size_t j) {
     const StoredPage page = storedPage(s, c, stored[j]);
     ContextPageReader reader(page.bytes, c.valueBits, pb, stored[j], page.offset, page.name);
-    withSampleArray(out, [&](auto* samples) {
+    withLebSamples(out, [&](auto* samples) {
       using T = std::remove_pointer_t<decltype(samples)>;
       reader.decode(
           order, s.dims, [&](const GridPoint& q) { return static_cast<std::int32_t>(samples[volumeIndex(q, s.dims)]); },

@@ -8,17 +8,20 @@
 
 namespace voxref::ref {
 
-ContextModels::ContextModels(int valueBits) : valueBits_(valueBits), treeDepth_(valueBits == 16 ? 4 : 3) {
+namespace {
+
+int checkedValueBits(int valueBits) {
   if (valueBits != 8 && valueBits != 16)
     throw std::invalid_argument("context coder: value bits must be 8 or 16, got " + std::to_string(valueBits));
-  zero_.resize(kContextContexts);
-  tree_.resize(static_cast<std::size_t>(kContextContexts) * 16);
-  sign_.resize(static_cast<std::size_t>(kContextSignContexts) * 17);
-  mantissa_.resize(static_cast<std::size_t>(kContextSignContexts) * 17 * 3);
+  return valueBits;
 }
 
+}  // namespace
+
 ContextPageState::ContextPageState(int valueBits, int pageBits, std::uint64_t page)
-    : models_(valueBits), begin_(page << pageBits), signedSymbol_(std::size_t{1} << pageBits, 0) {}
+    : models_(checkedValueBits(valueBits), kContextContexts, kContextSignContexts),
+      begin_(page << pageBits),
+      signedSymbol_(std::size_t{1} << pageBits, 0) {}
 
 ContextPageState::Contexts ContextPageState::contexts(const HzOrder& order, std::uint64_t h, const GridPoint& p,
                                                       const LebPointClass& c, int rangeBucket) const {

@@ -37,27 +37,9 @@ namespace voxref::ref {
 inline constexpr int kContextRangeBuckets = 8;   // the corners' range, bucketed (contextRangeBucket)
 inline constexpr int kContextNeighbourSums = 8;  // the neighbours' symbols summed, capped at 7
 inline constexpr int kContextSignContexts = 7;   // the neighbours' signs summed, clamped to [-3, 3]
+// The page's models (delta_decisions.h): context = neighbour sum x 8 + range bucket, sign context
+// = the neighbours' sign sum + 3.
 inline constexpr int kContextContexts = kContextRangeBuckets * kContextNeighbourSums;
-
-// The models of one page, all at their initial state (made afresh for every page), as
-// codeDeltaDecisions takes them: context = neighbour sum x 8 + range bucket, sign context =
-// neighbours' sign sum + 3.
-class ContextModels {
- public:
-  explicit ContextModels(int valueBits);  // throws std::invalid_argument unless 8 or 16
-  int valueBits() const { return valueBits_; }
-  int treeDepth() const { return treeDepth_; }
-  BitModel& zero(int context) { return zero_[static_cast<std::size_t>(context)]; }
-  BitModel& tree(int context, int node) { return tree_[static_cast<std::size_t>(context) * 16 + node]; }
-  BitModel& sign(int signContext, int symbol) { return sign_[static_cast<std::size_t>(signContext) * 17 + symbol]; }
-  BitModel& mantissa(int signContext, int symbol, int prefix) {
-    return mantissa_[(static_cast<std::size_t>(signContext) * 17 + symbol) * 3 + prefix];
-  }
-
- private:
-  int valueBits_, treeDepth_;
-  std::vector<BitModel> zero_, tree_, sign_, mantissa_;
-};
 
 // 0 for a range of 0, else min(7, 1 + ceil(log2 range)): 1, 2, 3..4, 5..8, 9..16, 17..32, > 32.
 inline int contextRangeBucket(std::int32_t range) {
@@ -106,8 +88,9 @@ CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned od
 // residual coded so far, by the point's place in the page (for the neighbours' contexts).
 class ContextPageState {
  public:
+  // Throws std::invalid_argument for value bits other than 8 or 16.
   ContextPageState(int valueBits, int pageBits, std::uint64_t page);
-  ContextModels& models() { return models_; }
+  DeltaDecisionModels& models() { return models_; }
   std::uint64_t pageBegin() const { return begin_; }
   struct Contexts {
     int context = 0, signContext = 3;
@@ -120,7 +103,7 @@ class ContextPageState {
   void record(std::uint64_t h, int symbol, bool negative);
 
  private:
-  ContextModels models_;
+  DeltaDecisionModels models_;
   std::uint64_t begin_;
   std::vector<std::int8_t> signedSymbol_;  // by place in the page: symbol, negated for a negative residual
 };

@@ -16,11 +16,41 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <vector>
 
 #include "reference/leb/range_coder.h"
 
 namespace voxref::ref {
+
+// The models of one page's decisions, all at their initial state (made afresh for every page):
+// `contexts` contexts of the zero flag and of the symbol tree, `signContexts` of the sign and of the
+// mantissa (each by symbol). The coders choose the contexts: the adaptive coder's are the previous
+// symbols and the component, the context coder's the corners and the neighbours. valueBits is 8
+// or 16 (the caller checks it, with its own message).
+class DeltaDecisionModels {
+ public:
+  DeltaDecisionModels(int valueBits, int contexts, int signContexts)
+      : valueBits_(valueBits),
+        treeDepth_(valueBits == 16 ? 4 : 3),
+        zero_(static_cast<std::size_t>(contexts)),
+        tree_(static_cast<std::size_t>(contexts) * 16),
+        sign_(static_cast<std::size_t>(signContexts) * 17),
+        mantissa_(static_cast<std::size_t>(signContexts) * 17 * 3) {}
+  int valueBits() const { return valueBits_; }
+  int treeDepth() const { return treeDepth_; }
+  BitModel& zero(int context) { return zero_[static_cast<std::size_t>(context)]; }
+  BitModel& tree(int context, int node) { return tree_[static_cast<std::size_t>(context) * 16 + node]; }
+  BitModel& sign(int signContext, int symbol) { return sign_[static_cast<std::size_t>(signContext) * 17 + symbol]; }
+  BitModel& mantissa(int signContext, int symbol, int prefix) {
+    return mantissa_[(static_cast<std::size_t>(signContext) * 17 + symbol) * 3 + prefix];
+  }
+
+ private:
+  int valueBits_, treeDepth_;
+  std::vector<BitModel> zero_, tree_, sign_, mantissa_;
+};
 
 // The encoder's bits: each decision is the value's own.
 struct EncodeBits {
@@ -42,10 +72,9 @@ struct DecodeBits {
 };
 
 // Codes one value: returns its symbol s (0 for zero) and sets `negative` and `magnitude` (decoding)
-// or takes them (encoding; `symbol` is then the value's symbol). Models provides zero(context),
-// tree(context, node), treeDepth(), sign(signContext, s) and mantissa(signContext, s, prefix).
-template <class Bits, class Models>
-int codeDeltaDecisions(Bits bits, Models& m, int context, int signContext, int symbol, int& negative,
+// or takes them (encoding; `symbol` is then the value's symbol).
+template <class Bits>
+int codeDeltaDecisions(Bits bits, DeltaDecisionModels& m, int context, int signContext, int symbol, int& negative,
                        std::uint32_t& magnitude) {
   if (bits.bit(m.zero(context), symbol == 0 ? 0 : 1) == 0) return 0;
   // The symbol: s - 1 as a binary tree, most significant bit first.

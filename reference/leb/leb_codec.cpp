@@ -36,23 +36,14 @@ ChannelSpec specOf(LebChannelKind kind, int sampleBits) {
 }
 ChannelSpec specOf(const LebChannel& c) { return {c.kind, c.components, c.valueBits, c.isSigned}; }
 
-// Calls f with the samples of a volume span (LebVolumeIn or LebVolumeOut), at 8 or 16 bits.
-template <class Span, class F>
-void withSamples(const Span& v, F&& f) {
-  if (v.data8)
-    f(v.data8);
-  else
-    f(v.data16);
-}
-
-// Calls f with the channel's values in a volume span: the samples (withSamples), or the gradients
+// Calls f with the channel's values in a volume span: the samples (withLebSamples), or the gradients
 // (3 int8 components a sample), in volume order.
 template <class Span, class F>
 void withChannel(const Span& v, LebChannelKind kind, F&& f) {
   if (kind == LebChannelKind::Gradients)
     f(v.gradients);
   else
-    withSamples(v, f);
+    withLebSamples(v, f);
 }
 
 // The components of a channel stored as T: the gradients are its only signed type
@@ -623,7 +614,7 @@ std::uint64_t slabKey(const GridPoint& p) {
 void deriveGradients(const LebVolumeOut& out, int threads, const LebWindow& window, WorkSpan part) {
   std::function<void(double)> afterBatch;
   if (window) afterBatch = [&](double done) { window(part.base + part.span * done); };
-  withSamples(
+  withLebSamples(
       out, [&](const auto* samples) { quantizedGradientsInto(samples, out.dims, out.gradients, threads, afterBatch); });
 }
 
@@ -666,7 +657,7 @@ void withSegment(const LebVolumeOut& out, const std::vector<ChannelDecode*>& gro
                                  {out.gradients, gradients.padding, gradients.inside}},
       dataStore, gradientStore);
   };
-  withSamples(out, withData);
+  withLebSamples(out, withData);
 }
 
 // Decodes the channels of `group`: one channel, or a stream's data and gradients (channels 0 and

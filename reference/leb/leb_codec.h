@@ -65,6 +65,14 @@ struct LebVolumeSpan {
 };
 using LebVolumeIn = LebVolumeSpan<const std::uint8_t, const std::uint16_t, const std::int8_t>;
 using LebVolumeOut = LebVolumeSpan<std::uint8_t, std::uint16_t, std::int8_t>;
+// Calls f with the span's samples: its 8-bit array if set, else its 16-bit one.
+template <class Span, class F>
+void withLebSamples(const Span& v, F&& f) {
+  if (v.data8)
+    f(v.data8);
+  else
+    f(v.data16);
+}
 
 // Receives the stream being made: its `bytes` at `offset`. Each byte is written once; the
 // payload in order, each channel's descriptor after its pages, the header last.

@@ -34,22 +34,17 @@ using namespace voxref::ref;
   std::abort();
 }
 
-// Decodes `page` into `values` (the volume, whose other pages hold their own samples); false when
-// the reader refuses it.
-bool decodePage(const std::string& page, const HzOrder& order, const Dims3& dims, int bits, int pageBits,
-                std::uint64_t index, std::vector<std::int32_t>& values) {
+// Decodes `page` into `values`, or false when the reader refuses it.
+bool decodePage(const std::string& page, const HzOrder& order, const voxref::fuzz::ContextPageInput& in,
+                std::vector<std::int32_t>& values) {
   try {
-    ContextPageReader reader(page, bits, pageBits, index, 100, "fuzz page");
-    reader.decode(
-        order, dims, [&](const GridPoint& q) { return values[volumeIndex(q, dims)]; },
-        [&](std::uint64_t, const GridPoint& p, std::int32_t v) {
-          if (v < 0 || v >= (1 << bits)) violated("a value outside [0, 2^b)");
-          values[volumeIndex(p, dims)] = v;
-        });
-    return true;
+    voxref::fuzz::decodeInputPage(page, order, in, values);
   } catch (const StreamError&) {
     return false;
   }
+  for (const std::int32_t v : values)
+    if (v < 0 || v >= (1 << in.bits)) violated("a value outside [0, 2^b)");
+  return true;
 }
 
 }  // namespace
@@ -61,11 +56,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string page(reinterpret_cast<const char*>(data) + voxref::fuzz::kContextPageHeader,
                          size - voxref::fuzz::kContextPageHeader);
   std::vector<std::int32_t> values = in.volume;
-  if (!decodePage(page, order, in.dims, in.bits, in.pageBits, in.page, values)) return 0;
+  if (!decodePage(page, order, in, values)) return 0;
   const std::string again = encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page,
                                               [&](const GridPoint& q) { return values[volumeIndex(q, in.dims)]; });
   std::vector<std::int32_t> back = in.volume;
-  if (!decodePage(again, order, in.dims, in.bits, in.pageBits, in.page, back) || back != values)
+  if (!decodePage(again, order, in, back) || back != values)
     violated("encodeContextPage of a page's values does not decode to them");
   return 0;
 }

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "reference/leb/context_value_coder.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
 
@@ -43,6 +44,16 @@ inline ContextPageInput contextPageInput(const ref::HzOrder& order, const std::u
         in.volume[ref::volumeIndex({x, y, z}, in.dims)] =
             static_cast<std::int32_t>(((1 << in.bits) - 1) * (0.5 + 0.5 * std::sin(0.4 * x - 0.3 * y + 0.2 * z)));
   return in;
+}
+
+// Decodes `page` as the input's page into `values` (the volume: its other pages hold their own
+// samples, the corners the page reads); throws StreamError as ContextPageReader does.
+inline void decodeInputPage(const std::string& page, const ref::HzOrder& order, const ContextPageInput& in,
+                            std::vector<std::int32_t>& values) {
+  ref::ContextPageReader reader(page, in.bits, in.pageBits, in.page, 0, "context page " + std::to_string(in.page));
+  reader.decode(
+      order, in.dims, [&](const ref::GridPoint& q) { return values[ref::volumeIndex(q, in.dims)]; },
+      [&](std::uint64_t, const ref::GridPoint& p, std::int32_t v) { values[ref::volumeIndex(p, in.dims)] = v; });
 }
 
 // The grid the header's extents lie in.

@@ -390,10 +390,7 @@ void contextPage() {
     const auto valueOf = [&](const ref::GridPoint& q) { return in.volume[ref::volumeIndex(q, in.dims)]; };
     const std::string page = ref::encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page, valueOf);
     std::vector<std::int32_t> back = in.volume;
-    ref::ContextPageReader reader(page, in.bits, in.pageBits, in.page, 0, name);
-    reader.decode(
-        order, in.dims, [&](const ref::GridPoint& q) { return back[ref::volumeIndex(q, in.dims)]; },
-        [&](std::uint64_t, const ref::GridPoint& p, std::int32_t v) { back[ref::volumeIndex(p, in.dims)] = v; });
+    fuzz::decodeInputPage(page, order, in, back);
     if (back != in.volume) throw std::runtime_error(name + " does not read back");
     write(name, header + page);
   };

@@ -179,14 +179,7 @@ class ContextStream : public ::testing::Test {
     const std::uint64_t total = kLebHeaderBytes + descriptor.size() + payload.size();
     return lebHeaderBytes(volume.dims(), 8, grid, kPageBits, channels, total, LebCoder::Context) + descriptor + payload;
   }
-  static std::string errorOf(std::string b) {
-    try {
-      decodeLeb(parseLebStream(std::move(b)));
-    } catch (const StreamError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  static std::string errorOf(std::string b) { return test_support::lebDecodeError(std::move(b)); }
   static constexpr int kPageBits = 4;
   Volume<std::uint16_t> volume = smooth({5, 3, 1}, 8);
   std::vector<std::pair<std::uint32_t, std::string>> pages;

@@ -313,14 +313,7 @@ class LebCorrupt : public ::testing::Test {
             crc32(std::string_view(b).substr(c.descriptorOffset, c.descriptorBytes - 4)));
     }
   }
-  static std::string errorOf(std::string b) {
-    try {
-      decodeLeb(parseLebStream(std::move(b)));
-    } catch (const StreamError& e) {
-      return e.what();
-    }
-    return "";
-  }
+  static std::string errorOf(std::string b) { return test_support::lebDecodeError(std::move(b)); }
   std::size_t tableAt(const LebChannel& c) const { return c.descriptorOffset + 20; }
   std::size_t pageIndicesAt(const LebChannel& c) const { return tableAt(c) + c.code.lengths.size(); }
   std::size_t pageLengthsAt(const LebChannel& c) const { return pageIndicesAt(c) + 4 * c.storedPage.size(); }

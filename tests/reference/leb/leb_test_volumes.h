@@ -1,12 +1,16 @@
 // Test helper: the volumes and coders the LEB codec tests encode, shared by the codec and the
-// derived-gradients tests.
+// derived-gradients tests, and the error a corrupt stream's decode gives.
 #pragma once
 
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
+#include <utility>
 
+#include "reference/common/byte_stream.h"
 #include "reference/common/volume.h"
+#include "reference/leb/leb_codec.h"
 #include "reference/leb/leb_stream.h"
 
 namespace voxref::ref::test_support {
@@ -32,5 +36,15 @@ inline Volume<std::uint16_t> smooth(const Dims3& d, int bits) {
 }
 
 inline constexpr LebCoder kLebCoders[] = {LebCoder::Lead1, LebCoder::Adaptive};
+
+// The StreamError of parsing and decoding a whole stream, or "" when it decodes.
+inline std::string lebDecodeError(std::string bytes) {
+  try {
+    decodeLeb(parseLebStream(std::move(bytes)));
+  } catch (const StreamError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 }  // namespace voxref::ref::test_support
