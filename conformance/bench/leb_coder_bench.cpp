@@ -60,7 +60,7 @@ enum CoderRow : std::size_t {
   kZstd,          // zstd -19 on the whole raw channel (the gradients' goal)
   kXz,            // xz -9 on the whole raw channel (the data's goal)
   kGoalOnPieces,  // the channel's goal coder on pieces of 2^16 samples (an anchor)
-  kContext16,     // voxref's context coder of the samples, pages of 2^16 (the data; the gradients derived)
+  kContext16,     // voxref's context coder of the samples and of the gradients, pages of 2^16
   kContext18,     // the same, pages of 2^18
   kCoderRows
 };
@@ -118,21 +118,44 @@ CoderFigure lead1(const ref::LebStream& s, const ChannelPages& c, int runs) {
   return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs)};
 }
 
-// The context coder's stream of the samples alone (reference/leb/FORMAT.md, "Context pages"): its
-// bytes, header and page table included, and its whole-volume decode on one thread, checked bit
-// for bit in the run. Its gradients are derived (none stored).
-CoderFigure contextCoder(const LebDataset& d, int pageBits, int threads, int runs) {
+// The context coder's stream (reference/leb/FORMAT.md, "Context pages" and "Context gradient
+// pages") of the samples and the stored `gradients` (3 int8 a sample): the data's figure (the
+// header, its descriptor and pages; the decode of the stream of the samples alone, which holds the
+// same bytes) and the gradients' (their descriptor and pages; their decode: the whole stream's
+// decode minus the samples', medians of the same run, one measured after the other). One thread;
+// every stream checked bit for bit in the run.
+struct ContextFigures {
+  CoderFigure data, gradients;
+};
+ContextFigures contextCoder(const LebDataset& d, const std::vector<std::int8_t>& gradients, int pageBits, int threads,
+                            int runs) {
   ref::LebEncodeOptions o;
   o.pageBits = pageBits;
   o.coder = ref::LebCoder::Context;
   o.gradients = false;
   o.threads = threads;
-  const ref::LebStream s = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, o));
-  if (ref::decodeLeb(s, 1).data.data() != d.volume.data())
+  const ref::LebStream alone = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, o));
+  if (ref::decodeLeb(alone, 1).data.data() != d.volume.data())
     throw std::runtime_error("leb.coder: a context stream did not decode to its samples");
-  return {"context (voxref's: samples from their corners' values; pages of 2^" + std::to_string(pageBits) +
-              ", the whole volume decoded)",
-          static_cast<double>(s.bytes.size()), measure([&] { (void)ref::decodeLeb(s, 1); }, runs)};
+  o.gradients = true;
+  const ref::LebStream both = ref::parseLebStream(
+      ref::encodeLeb(ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), gradients.data()}, o));
+  const ref::LebDecoded back = ref::decodeLeb(both, 1);
+  if (back.data.data() != d.volume.data() || back.gradients != gradients)
+    throw std::runtime_error("leb.coder: a context stream did not decode to its samples and gradients");
+  const Timing samples = measure([&] { (void)ref::decodeLeb(alone, 1); }, runs);
+  const Timing whole = measure([&] { (void)ref::decodeLeb(both, 1); }, runs);
+  Timing rest = whole;
+  rest.median = std::max(whole.median - samples.median, 1e-9);
+  rest.min = std::max(whole.min - samples.max, 1e-9);
+  rest.max = std::max(whole.max - samples.min, 1e-9);
+  const ref::LebChannel& g = both.channels[1];
+  const std::string pages = "pages of 2^" + std::to_string(pageBits);
+  return {{"context (voxref's: samples from their corners' values; " + pages + ", the whole volume decoded)",
+           static_cast<double>(alone.bytes.size()), samples},
+          {"context (voxref's: vectors from their corners', gz from the unit sphere; " + pages +
+               ", the whole volume decoded: the stream's decode less the samples')",
+           static_cast<double>(g.descriptorBytes + g.pageOffset.back()), rest}};
 }
 
 CoderFigure baseline(const BaselineResult& b) {
@@ -187,6 +210,9 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
   ref::LebEncodeOptions options;
   options.threads = o.threads;
   const ref::LebStream s = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, options));
+  const std::vector<std::int8_t> gradients = ref::quantizedGradients(d.volume);
+  const std::array<ContextFigures, 2> context{contextCoder(d, gradients, 16, o.threads, runs),
+                                              contextCoder(d, gradients, 18, o.threads, runs)};
   std::vector<ChannelFigures> figures;
   for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
     const bool data = kind == ref::LebChannelKind::Data;
@@ -203,11 +229,8 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
       f.tripleEntropy = tripleEntropyBytes(raw);
       f.derive = measure([&] { (void)ref::quantizedGradients(d.volume); }, runs);
     }
-    for (const auto& [row, pageBits] : {std::pair{kContext16, 16}, std::pair{kContext18, 18}})
-      f.coders[row] = data ? contextCoder(d, pageBits, o.threads, runs)
-                           : CoderFigure{"context, pages of 2^" + std::to_string(pageBits) +
-                                             ": none stored, derived from the samples",
-                                         0.0, f.derive};
+    f.coders[kContext16] = data ? context[0].data : context[0].gradients;
+    f.coders[kContext18] = data ? context[1].data : context[1].gradients;
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
     figures.push_back(std::move(f));
@@ -216,6 +239,25 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
 }
 
 std::string ratioText(double r) { return formatNumber("%.3f:1", r); }
+
+// The paper's Table 1 conditions for the gradients (diffused before they are quantized;
+// kPaperDiffusionSteps): zstd -19, xz -9 and the context coder (pages of 2^16) on the same bytes.
+struct DiffusedFigures {
+  int steps = 0;
+  double rawBytes = 0.0;
+  CoderFigure zstd, xz, context;
+};
+std::vector<DiffusedFigures> measureDiffused(const BenchOptions& o, const LebDataset& d) {
+  const int runs = o.quick ? 1 : 3;
+  std::vector<DiffusedFigures> out;
+  for (const int steps : kPaperDiffusionSteps) {
+    const std::vector<std::int8_t> g = ref::diffusedQuantizedGradients(d.volume, steps);
+    const std::string raw(reinterpret_cast<const char*>(g.data()), g.size());
+    out.push_back({steps, static_cast<double>(raw.size()), baseline(zstdBaseline(raw, 19)),
+                   baseline(xzBaseline(raw, 9)), contextCoder(d, g, 16, o.threads, runs).gradients});
+  }
+  return out;
+}
 
 }  // namespace
 
@@ -249,7 +291,6 @@ BenchTable lebCoderBench(const BenchOptions& o) {
           {"volume", d.name}, {"channel", channel}, {"raw_bytes", f.rawBytes}, {"coders", nlohmann::json::array()}};
       for (std::size_t i = 0; i < f.coders.size(); ++i) {
         const CoderFigure& c = f.coders[i];
-        if (!data && contextRow(i)) continue;  // the context coder stores no gradients: the derived row below
         std::string verdict;
         if (i == kAdaptive12 || i == kAdaptive16 || contextRow(i)) {
           const double against = goal.bytes / c.bytes;  // the coder's ratio over the goal's
@@ -282,6 +323,28 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       }
       t.data["rows"].push_back(row);
     }
+    for (const DiffusedFigures& f : measureDiffused(o, d)) {
+      const std::string channel =
+          "gradients diffused " + std::to_string(f.steps) + " steps (the paper's Table 1 conditions; not derivable)";
+      nlohmann::json row = {{"volume", d.name},
+                            {"channel", channel},
+                            {"diffusion_steps", f.steps},
+                            {"raw_bytes", f.rawBytes},
+                            {"coders", nlohmann::json::array()}};
+      for (const CoderFigure* c : {&f.zstd, &f.xz, &f.context}) {
+        const double against = f.zstd.bytes / c->bytes;
+        t.rows.push_back({d.name, channel, c->coder, ratioText(f.rawBytes / c->bytes),
+                          formatNumber("%.1f", f.rawBytes / 1e6 / c->decode.median),
+                          c == &f.context ? formatNumber("%.2f", against) +
+                                                " of zstd -19's ratio: " + (against > 1.0 ? "beats it" : "below it")
+                                          : ""});
+        row["coders"].push_back({{"coder", c->coder},
+                                 {"bytes", c->bytes},
+                                 {"ratio", f.rawBytes / c->bytes},
+                                 {"decode", toJson(c->decode)}});
+      }
+      t.data["rows"].push_back(row);
+    }
   }
   progress.finish();
   t.notes =
@@ -291,10 +354,14 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "the header; the lead-1 rows also its code table. Both code the same deltas (the paper's split-edge prediction, "
       "pages coded on their own, so random access stays); the adaptive coder's contexts are the page's previous two "
       "deltas, its models restart with every page (reference/leb/FORMAT.md, 'Adaptive pages'). The context coder's "
-      "rows are whole streams of the samples (header and page table counted; 'Context pages'): each point predicted "
-      "from all its corners, with contexts from their range and from its page's neighbours of its class, so a page "
-      "decodes with its corners' values, which random access reads anyway; its decode figure is the whole volume's, "
-      "and it stores no gradients (they are derived: the derived row). zstd and xz compress "
+      "rows are one stream of the samples and the gradients ('Context pages', 'Context gradient pages'): each point "
+      "predicted from all its corners, with contexts from their range and from its page's neighbours of its class, "
+      "so a page decodes with its corners' values, which random access reads anyway; a gradient's gz is coded from "
+      "the unit sphere given gx and gy. The data row counts the header, the data's descriptor and pages, the "
+      "gradients row the gradients' descriptor and pages; the data's decode figure is the whole volume's samples "
+      "(the stream of the samples alone), the gradients' the whole stream's decode less that (medians of the same "
+      "run). The rows 'gradients diffused N steps' code the paper's Table 1 gradients (diffused before "
+      "quantizing: reference/leb/gradients.h), which no decoder can derive from the samples. zstd and xz compress "
       "the raw channel whole (zstd -19, xz -9; no random access); the anchor 'on pieces' gives the goal's coder the "
       "adaptive 2^16 coder's random access: the raw channel cut into pieces of 2^16 samples (four slices of the "
       "hydrogen atom, one of the engine), each compressed on its own with its frame or .xz container, so that it "
@@ -314,13 +381,12 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
   StudyGroup g{"entropy stage (" + d.name + ")",
                "none: every coder decodes bit for bit (checked in the run)",
                "decoding the whole volume's deltas (data and gradients), one thread; zstd and xz: the raw bytes; "
-               "the context coder: the whole volume's samples, and its gradients derived from them",
+               "the context coder: the whole volume's samples and gradients",
                "the coded bytes (data + gradients)",
                true,
                {},
                "The adaptive and context coders and lead-1 keep page random access; zstd and xz do not, except on "
-               "pieces of 2^16 samples (the data's by xz -9, the gradients' by zstd -19). The context coder stores "
-               "no gradients (derived from the samples)."};
+               "pieces of 2^16 samples (the data's by xz -9, the gradients' by zstd -19)."};
   const std::vector<ChannelFigures> f = measureDataset(o, d);
   for (std::size_t i = 0; i < f[0].coders.size(); ++i) {
     StudyVariant v;
@@ -329,7 +395,7 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
                  ? f[0].coders[i].coder
                  : goalCoderName(true) + " (data), " + goalCoderName(false) + " (gradients), on pieces of 2^" +
                        std::to_string(kPieceSampleBits) + " samples each on its own";
-    if (contextRow(i)) v.name += " + gradients derived: none stored";  // not a coder of the gradients
+    if (contextRow(i)) v.name += "; its gradients' pages beside";  // both channels, as every other variant
     v.error = 0.0;
     const Timing& a = f[0].coders[i].decode;
     const Timing& b = f[1].coders[i].decode;

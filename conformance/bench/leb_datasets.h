@@ -33,6 +33,11 @@ std::vector<LebDataset> lebDatasets(const BenchOptions& o);
 std::vector<LebDataset> folderLebDatasets(const BenchOptions& o);
 const LebDataset* firstAvailable(const std::vector<LebDataset>& sets);
 
+// The lengths of voxref's diffusion of the gradients (reference/leb/gradients.h,
+// diffusedQuantizedGradients) that the benches measure for the paper's Table 1 conditions, which
+// name neither the scheme nor its length.
+inline constexpr int kPaperDiffusionSteps[] = {2, 8};
+
 // The samples at 1 or 2 bytes (little endian), x fastest.
 std::string dataBytes(const ref::Volume<std::uint16_t>& v, int bits);
 // quantizedGradients(v) as bytes, 3 per sample.

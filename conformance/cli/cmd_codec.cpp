@@ -56,7 +56,7 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
       ->add_option("--coder", encode->lebCoder,
                    "leb: the pages' entropy stage: lead1 (the paper's Huffman code; a version 2 stream), adaptive "
                    "(voxref's range coder; version 3) or context (voxref's range coder of the samples from their "
-                   "corners; version 4, with --derive-gradients or --no-gradients)")
+                   "corners, and of the gradients from theirs and the unit sphere; version 4)")
       ->default_val("lead1");
   encodeCmd->add_flag("--no-gradients", encode->noGradients, "leb: code the data only, no gradients channel");
   encodeCmd->add_flag("--derive-gradients", encode->deriveGradients,

@@ -66,8 +66,8 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
   out << "\ncoder           "
       << (s.coder == ref::LebCoder::Lead1      ? "lead1 (the paper's Huffman code of lead-1 symbols; version 2)"
           : s.coder == ref::LebCoder::Adaptive ? "adaptive (voxref's range coder; version 3, reference/leb/FORMAT.md)"
-                                               : "context (voxref's range coder of the samples with their corners' "
-                                                 "contexts; version 4, reference/leb/FORMAT.md)");
+                                               : "context (voxref's range coder of the samples and gradients with "
+                                                 "their corners' contexts; version 4, reference/leb/FORMAT.md)");
   out << "\npages           " << st.storedPages << " stored of the grid's " << st.pages << ", each "
       << (1u << s.pageBits) << " points (pages of padding alone are not stored)\n";
   for (const ref::LebChannelStats& c : st.channels) {
@@ -111,10 +111,6 @@ int encodeLebCommand(const EncodeOptions& o) {
     options.coder = ref::LebCoder::Context;
   else
     throw conf::UsageError("--coder must be lead1, adaptive or context, got " + o.lebCoder);
-  if (options.coder == ref::LebCoder::Context && ref::lebStoresGradients(options))
-    throw conf::UsageError(
-        "--coder context stores the samples alone: give --derive-gradients (the decoder derives the gradients) or "
-        "--no-gradients");
   // What the encoder will allocate is known from the extents (the samples, and the padding that
   // predictions reach: leb_padding.h). Refused before the volume is read when the process may not
   // allocate it.

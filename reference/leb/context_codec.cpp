@@ -1,11 +1,13 @@
 #include "reference/leb/context_codec.h"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <vector>
 
 #include "reference/common/crc32.h"
 #include "reference/common/parallel.h"
+#include "reference/leb/context_gradient_coder.h"
 #include "reference/leb/context_value_coder.h"
 #include "reference/leb/leb_page.h"
 
@@ -16,9 +18,15 @@ namespace {
 // between two looks.
 int batchPages(int threads) { return 4 * workerCount(threads); }
 
-// The stored pages of a volume: those holding one of its points, ascending (one walk of its
-// points: forEachInside skips the padding whole, so a 1025x1x1 volume costs its 1025 points).
-std::vector<std::uint32_t> pagesWithPoints(const HzOrder& order, const Dims3& dims, int pageBits) {
+// A gradient of the volume, as the gradient coder takes it.
+std::array<std::int8_t, 3> gradientAt(const std::int8_t* gradients, const GridPoint& q, const Dims3& dims) {
+  const std::int8_t* g = gradients + 3 * volumeIndex(q, dims);
+  return {g[0], g[1], g[2]};
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> contextStoredPages(const HzOrder& order, const Dims3& dims, int pageBits) {
   std::vector<std::uint32_t> pages;
   order.forEachInside(dims, 0, order.size(), [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
     const auto page = static_cast<std::uint32_t>(h >> pageBits);
@@ -27,15 +35,13 @@ std::vector<std::uint32_t> pagesWithPoints(const HzOrder& order, const Dims3& di
   return pages;
 }
 
-}  // namespace
-
-std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, int pageBits, int threads,
+std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, LebChannelKind kind,
+                                   const std::vector<std::uint32_t>& stored, int pageBits, int threads,
                                    const LebProgress& progress, const LebStreamWrite& write, std::uint64_t offset) {
-  LebChannelTable table{
-      LebChannelKind::Data, 1, v.sampleBits, false, {}, pagesWithPoints(order, v.dims, pageBits), {}, {},
-      LebCoder::Context};
+  const bool data = kind == LebChannelKind::Data;
+  LebChannelTable table{kind, data ? 1 : 3, data ? v.sampleBits : 8, !data, {}, stored, {}, {}, LebCoder::Context};
   const std::uint64_t descriptorAt = offset;
-  offset += lebDescriptorSize(v.sampleBits, table.storedPage.size(), LebCoder::Context);
+  offset += lebDescriptorSize(table.valueBits, table.storedPage.size(), LebCoder::Context);
   const int count = static_cast<int>(table.storedPage.size()), batch = batchPages(threads);
   std::vector<std::string> coded;
   for (int first = 0; first < count; first += batch) {
@@ -43,6 +49,11 @@ std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, i
     coded.assign(static_cast<std::size_t>(end - first), {});
     parallelFor(end - first, threads, [&](int i) {
       const std::uint64_t page = table.storedPage[static_cast<std::size_t>(first + i)];
+      if (!data) {
+        coded[static_cast<std::size_t>(i)] = encodeContextGradientPage(
+            order, v.dims, pageBits, page, [&](const GridPoint& q) { return gradientAt(v.gradients, q, v.dims); });
+        return;
+      }
       withLebSamples(v, [&](const auto* samples) {
         coded[static_cast<std::size_t>(i)] = encodeContextPage(
             order, v.dims, v.sampleBits, pageBits, page,
@@ -72,9 +83,13 @@ std::uint64_t contextPagesNeededBelow(const HzOrder& order, int pageBits, std::u
   return std::min(page, ((coarser - 1) >> pageBits) + 1);
 }
 
-void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVolumeOut& out, int threads,
-                          const LebProgress& progress) {
-  const LebChannel& c = s.channels.at(0);
+namespace {
+
+// One channel of a version 4 stream: its page table checked, then its pages decoded in waves, each
+// page by decodePage(j) (the j-th stored page).
+template <class DecodePage>
+void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebChannel& c, int threads,
+                          const LebProgress& progress, DecodePage&& decodePage) {
   const int pb = s.pageBits;
   const std::vector<std::uint32_t>& stored = c.storedPage;
   // The page table against the extents: exactly the pages that hold points of the volume, in
@@ -90,18 +105,6 @@ void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVol
   }
   std::vector<std::uint64_t> needed(stored.size());
   for (std::size_t j = 0; j < stored.size(); ++j) needed[j] = contextPagesNeededBelow(order, pb, stored[j]);
-  const auto decodePage = [&](std::size_t j) {
-    const StoredPage page = storedPage(s, c, stored[j]);
-    ContextPageReader reader(page.bytes, c.valueBits, pb, stored[j], page.offset, page.name);
-    withLebSamples(out, [&](auto* samples) {
-      using T = std::remove_pointer_t<decltype(samples)>;
-      reader.decode(
-          order, s.dims, [&](const GridPoint& q) { return static_cast<std::int32_t>(samples[volumeIndex(q, s.dims)]); },
-          [&](std::uint64_t, const GridPoint& p, std::int32_t value) {
-            samples[volumeIndex(p, s.dims)] = static_cast<T>(value);
-          });
-    });
-  };
   // Waves: from the first page not yet decoded, every following page whose corners lie below it.
   const int batch = progress ? batchPages(threads) : static_cast<int>(stored.size());
   for (std::size_t first = 0; first < stored.size();) {
@@ -114,6 +117,46 @@ void decodeContextChannel(const LebStream& s, const HzOrder& order, const LebVol
     }
     first = end;
   }
+}
+
+}  // namespace
+
+void decodeContextChannels(const LebStream& s, const HzOrder& order, const LebVolumeOut& out, int threads,
+                           const LebProgress& progress) {
+  const int pb = s.pageBits;
+  // The work of a channel is in proportion to its components (1 and 3).
+  const double total = s.channels.size() > 1 ? 4.0 : 1.0;
+  const auto share = [&](double from, double width) -> LebProgress {
+    if (!progress) return {};
+    return [&progress, from, width, total](double done) { progress((from + width * done) / total); };
+  };
+  const LebChannel& data = s.channels.at(0);
+  decodeContextChannel(s, order, data, threads, share(0.0, 1.0), [&](std::size_t j) {
+    const StoredPage page = storedPage(s, data, data.storedPage[j]);
+    ContextPageReader reader(page.bytes, data.valueBits, pb, data.storedPage[j], page.offset, page.name);
+    withLebSamples(out, [&](auto* samples) {
+      using T = std::remove_pointer_t<decltype(samples)>;
+      reader.decode(
+          order, s.dims, [&](const GridPoint& q) { return static_cast<std::int32_t>(samples[volumeIndex(q, s.dims)]); },
+          [&](std::uint64_t, const GridPoint& p, std::int32_t value) {
+            samples[volumeIndex(p, s.dims)] = static_cast<T>(value);
+          });
+    });
+  });
+  if (s.channels.size() < 2) return;
+  const LebChannel& gradients = s.channels[1];
+  decodeContextChannel(s, order, gradients, threads, share(1.0, 3.0), [&](std::size_t j) {
+    const StoredPage page = storedPage(s, gradients, gradients.storedPage[j]);
+    ContextGradientPageReader reader(page.bytes, pb, gradients.storedPage[j], page.offset, page.name);
+    reader.decode(
+        order, s.dims, [&](const GridPoint& q) { return gradientAt(out.gradients, q, s.dims); },
+        [&](std::uint64_t, const GridPoint& p, const std::array<std::int8_t, 3>& g) {
+          std::int8_t* to = out.gradients + 3 * volumeIndex(p, s.dims);
+          to[0] = g[0];
+          to[1] = g[1];
+          to[2] = g[2];
+        });
+  });
 }
 
 }  // namespace voxref::ref

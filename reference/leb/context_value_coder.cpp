@@ -57,46 +57,48 @@ void encodeContextValue(RangeEncoder& out, ContextPageState& state, std::uint64_
   state.record(h, symbol, negative != 0);
 }
 
-ContextPageReader::ContextPageReader(std::string_view bytes, int valueBits, int pageBits, std::uint64_t page,
-                                     std::size_t streamOffset, std::string what)
-    : state_(valueBits, pageBits, page),
-      in_(bytes),
-      pageBits_(pageBits),
-      pageBytes_(bytes.size()),
-      streamOffset_(streamOffset),
-      what_(std::move(what)) {
+ContextPageInput::ContextPageInput(std::string_view bytes, std::size_t streamOffset, std::string what)
+    : in_(bytes), pageBytes_(bytes.size()), streamOffset_(streamOffset), what_(std::move(what)) {
   if (bytes.size() < 5 || !in_.firstByteValid())  // named at the page's first byte
     throw StreamError(streamOffset_, what_ + ": " +
                                          (bytes.size() < 5 ? "a page of the context coder has at least 5 bytes"
                                                            : "the first byte of a context page must be 0"));
 }
 
+void ContextPageInput::checkInside(std::uint64_t value) const {
+  if (in_.overrun()) fail("the page ends inside value " + std::to_string(value));
+}
+
+void ContextPageInput::finish(std::uint64_t values) const {
+  if (values == 0) fail("the page holds no point of the volume (a stream stores exactly the pages that do)");
+  if (in_.consumed() != pageBytes_)
+    fail(std::to_string(pageBytes_ - std::min(in_.consumed(), pageBytes_)) + " bytes left after the last value");
+}
+
+void ContextPageInput::fail(const std::string& detail) const {
+  throw StreamError(streamOffset_ + std::min(in_.consumed(), pageBytes_), what_ + ": " + detail);
+}
+
+ContextPageReader::ContextPageReader(std::string_view bytes, int valueBits, int pageBits, std::uint64_t page,
+                                     std::size_t streamOffset, std::string what)
+    : state_(valueBits, pageBits, page), input_(bytes, streamOffset, std::move(what)), pageBits_(pageBits) {}
+
 std::int32_t ContextPageReader::next(std::uint64_t h, const ContextPoint& point) {
   int negative = 0;
   std::uint32_t magnitude = 0;
-  const int s = codeDeltaDecisions(DecodeBits{in_}, state_.models(), point.contexts.context, point.contexts.signContext,
-                                   0, negative, magnitude);
-  if (in_.overrun()) fail("the page ends inside value " + std::to_string(read_));
+  const int s = codeDeltaDecisions(DecodeBits{input_.decoder()}, state_.models(), point.contexts.context,
+                                   point.contexts.signContext, 0, negative, magnitude);
+  input_.checkInside(read_);
   const int b = state_.models().valueBits();
   if (s == b && (magnitude != (1u << (b - 1)) || !negative))
-    fail("value " + std::to_string(read_) + ": residual magnitude " + std::to_string(magnitude) +
-         (negative ? "" : " (+)") + " is outside the " + std::to_string(b) + "-bit range");
+    input_.fail("value " + std::to_string(read_) + ": residual magnitude " + std::to_string(magnitude) +
+                (negative ? "" : " (+)") + " is outside the " + std::to_string(b) + "-bit range");
   state_.record(h, s, negative != 0);
   ++read_;
   const std::int32_t r = s == 0     ? 0
                          : negative ? -static_cast<std::int32_t>(magnitude)
                                     : static_cast<std::int32_t>(magnitude);
   return wrapSample(point.prediction + r, b, false);
-}
-
-void ContextPageReader::finish() const {
-  if (read_ == 0) fail("the page holds no point of the volume (a stream stores exactly the pages that do)");
-  if (in_.consumed() != pageBytes_)
-    fail(std::to_string(pageBytes_ - std::min(in_.consumed(), pageBytes_)) + " bytes left after the last value");
-}
-
-void ContextPageReader::fail(const std::string& detail) const {
-  throw StreamError(streamOffset_ + std::min(in_.consumed(), pageBytes_), what_ + ": " + detail);
 }
 
 }  // namespace voxref::ref

@@ -11,9 +11,10 @@
 // points that reconstructing any of its points reads anyway (random access, leb_reader.h, decodes
 // them through their own pages). Nothing of a page depends on another page of its own scale.
 //
-// The values are the samples themselves (8 or 16 bits), not the paper's deltas: a stream of this
-// coder stores the data channel alone (its gradients, if any, are derived: FORMAT.md, header byte
-// 23). The decisions per residual are delta_decisions.h's, with this coder's contexts.
+// The values are the samples themselves (8 or 16 bits), not the paper's deltas; a stream of this
+// coder stores its gradients, if it has them and does not derive them (FORMAT.md, header byte 23),
+// in pages of their own (context_gradient_coder.h). The decisions per residual are
+// delta_decisions.h's, with this coder's contexts.
 //
 // The decoder is for untrusted bytes: a page whose first byte is not 0, that ends inside a value,
 // holds a residual of +2^(b-1), or has bytes left after its last value throws StreamError with the
@@ -48,18 +49,13 @@ inline int contextRangeBucket(std::int32_t range) {
                   1 + static_cast<int>(std::bit_width(static_cast<std::uint32_t>(range - 1))));
 }
 
-// A point's prediction from its corners and the bucket of their range.
-struct CornerPrediction {
-  std::int32_t prediction = 0;
-  int rangeBucket = 0;
-};
-// The corners of p (scale 2^scaleLog2, odd axes oddAxes, not a root corner): the 2^n points at +-h
-// on its n odd axes, those inside the volume `dims` (the one at -h on every odd axis always is);
-// valueOf(q) gives a corner's value. prediction = floor((sum + floor(m / 2)) / m) over the m
-// corners inside, range = their maximum - their minimum.
-template <class ValueOf>
-CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned oddAxes, const Dims3& dims,
-                                  ValueOf&& valueOf) {
+// Calls f(q) for each corner of p (scale 2^scaleLog2, odd axes oddAxes, not a root corner) that
+// lies inside the volume `dims`: of the 2^n points at +-h on its n odd axes, those inside (the one
+// at -h on every odd axis always is), in the order of c = 0 .. 2^n - 1 (bit i of c: +h on the
+// i-th odd axis). Returns how many it called f for. The data's and the gradients' predictions
+// (context_gradient_coder.h) both walk the corners with it.
+template <class F>
+int forEachCornerInside(const GridPoint& p, int scaleLog2, unsigned oddAxes, const Dims3& dims, F&& f) {
   const int h = 1 << scaleLog2;
   int axes[3], n = 0;
   unsigned plusInside = 0;  // bit i: the corner at +h on odd axis i lies inside the volume
@@ -68,20 +64,43 @@ CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned od
       if (p[a] + h < dims[a]) plusInside |= 1u << n;
       axes[n++] = a;
     }
-  std::int64_t sum = 0;
-  std::int32_t lo = 0, hi = 0;
   int m = 0;
   for (unsigned c = 0; c < (1u << n); ++c) {
     if (c & ~plusInside) continue;  // +h on an axis where that leaves the volume
     GridPoint q = p;
     for (int i = 0; i < n; ++i) q[axes[i]] += ((c >> i) & 1u) ? h : -h;
-    const std::int32_t v = valueOf(q);
-    sum += v;
-    lo = m == 0 ? v : std::min(lo, v);
-    hi = m == 0 ? v : std::max(hi, v);
+    f(q);
     ++m;
   }
+  return m;
+}
+
+// The rounded mean and the range of m > 0 corner values (their sum, minimum and maximum).
+struct CornerPrediction {
+  std::int32_t prediction = 0;
+  int rangeBucket = 0;
+};
+inline CornerPrediction cornerMean(std::int64_t sum, std::int32_t lo, std::int32_t hi, int m) {
   return {static_cast<std::int32_t>((sum + m / 2) / m), contextRangeBucket(hi - lo)};
+}
+
+// A point's prediction from its corners and the bucket of their range: over the m corners inside
+// the volume (forEachCornerInside), valueOf(q) giving a corner's value (>= 0),
+// prediction = floor((sum + floor(m / 2)) / m), range = their maximum - their minimum.
+template <class ValueOf>
+CornerPrediction cornerPrediction(const GridPoint& p, int scaleLog2, unsigned oddAxes, const Dims3& dims,
+                                  ValueOf&& valueOf) {
+  std::int64_t sum = 0;
+  std::int32_t lo = 0, hi = 0;
+  bool first = true;
+  const int m = forEachCornerInside(p, scaleLog2, oddAxes, dims, [&](const GridPoint& q) {
+    const std::int32_t v = valueOf(q);
+    sum += v;
+    lo = first ? v : std::min(lo, v);
+    hi = first ? v : std::max(hi, v);
+    first = false;
+  });
+  return cornerMean(sum, lo, hi, m);
 }
 
 // What one page's coding keeps between its points: the models, and the symbol and sign of every
@@ -143,12 +162,32 @@ std::string encodeContextPage(const HzOrder& order, const Dims3& dims, int value
   return out.finish();
 }
 
+// The bytes of one context page (data or gradients, context_gradient_coder.h) as a reader walks
+// them: the range decoder, and the page's errors, each a StreamError at the byte offset reached,
+// naming the page.
+class ContextPageInput {
+ public:
+  // `streamOffset` is the offset of the page's first byte in the stream and `what` names the page
+  // ("data page 17"). The bytes must outlive the input. Throws StreamError for a page shorter than
+  // 5 bytes or whose first byte is not 0.
+  ContextPageInput(std::string_view bytes, std::size_t streamOffset, std::string what);
+  RangeDecoder& decoder() { return in_; }
+  // After value `value` (counted from 0) of the page: throws if the decoder read past the page.
+  void checkInside(std::uint64_t value) const;
+  // After the page's last point, `values` of them: throws for a page of no point, or for bytes left.
+  void finish(std::uint64_t values) const;
+  [[noreturn]] void fail(const std::string& detail) const;
+
+ private:
+  RangeDecoder in_;
+  std::size_t pageBytes_, streamOffset_;
+  std::string what_;
+};
+
 // Reads the values of one page.
 class ContextPageReader {
  public:
-  // `streamOffset` is the offset of the page's first byte in the stream and `what` names the page
-  // ("data page 17"): both go into the StreamError messages. The page's bytes must outlive the
-  // reader. Throws StreamError for a page shorter than 5 bytes or whose first byte is not 0.
+  // As ContextPageInput's constructor, for a page of values of valueBits bits.
   ContextPageReader(std::string_view bytes, int valueBits, int pageBits, std::uint64_t page, std::size_t streamOffset,
                     std::string what);
   // Decodes the page's points inside the volume in hierarchical order: valueOf(q) gives the value
@@ -157,27 +196,21 @@ class ContextPageReader {
   // StreamError (above), and after the last point unless the bytes are used up exactly.
   template <class ValueOf, class Store>
   std::uint64_t decode(const HzOrder& order, const Dims3& dims, ValueOf&& valueOf, Store&& store) {
-    std::uint64_t points = 0;
     order.forEachInside(dims, state_.pageBegin(), state_.pageBegin() + (std::uint64_t{1} << pageBits_),
                         [&](std::uint64_t h, const GridPoint& p, int level, int scaleLog2, unsigned oddAxes) {
                           const ContextPoint cp =
                               contextPoint(order, dims, state_, h, p, level, scaleLog2, oddAxes, valueOf);
                           store(h, p, next(h, cp));
-                          ++points;
                         });
-    finish();
-    return points;
+    input_.finish(read_);
+    return read_;
   }
 
  private:
   std::int32_t next(std::uint64_t h, const ContextPoint& point);
-  void finish() const;
-  [[noreturn]] void fail(const std::string& detail) const;
   ContextPageState state_;
-  RangeDecoder in_;
+  ContextPageInput input_;
   int pageBits_;
-  std::size_t pageBytes_, streamOffset_;
-  std::string what_;
   std::uint64_t read_ = 0;
 };
 

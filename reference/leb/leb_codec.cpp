@@ -501,10 +501,6 @@ void checkSpan(const LebVolumeIn& v, const LebEncodeOptions& o) {
   if (v.data8 && v.sampleBits != 8) throw std::invalid_argument("8-bit storage holds 8-bit samples only");
   if (o.deriveGradients && !o.gradients)
     throw std::invalid_argument("deriving the gradients needs gradients: options.gradients is false");
-  if (lebStoresGradients(o) && o.coder == LebCoder::Context)
-    throw std::invalid_argument(
-        "the context coder stores the samples alone: derive the gradients from them (deriveGradients, voxref encode "
-        "--derive-gradients) or encode without gradients");
   if (lebStoresGradients(o) && !v.gradients) throw std::invalid_argument("the gradients channel needs the gradients");
   checkPageBits(o.pageBits);
 }
@@ -523,9 +519,22 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
   checkSpan(v, o);
   const LebGrid grid = lebGridCovering(v.dims);
   const HzOrder order(grid);
-  if (o.coder == LebCoder::Context) {  // the samples alone (checkSpan: no gradients channel)
-    const std::uint64_t end = encodeContextChannel(order, v, o.pageBits, o.threads, o.window, write, kLebHeaderBytes);
-    write(0, lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, 1, end, o.coder, o.deriveGradients));
+  if (o.coder == LebCoder::Context) {  // the samples, then any gradients channel (context_codec.h)
+    const std::vector<std::uint32_t> stored = contextStoredPages(order, v.dims, o.pageBits);
+    const bool gradients = lebStoresGradients(o);
+    // The work of a channel is in proportion to its components (1 and 3).
+    const double total = gradients ? 4.0 : 1.0;
+    const auto share = [&](double from, double width) -> LebProgress {
+      if (!o.window) return {};
+      return [&o, from, width, total](double done) { o.window((from + width * done) / total); };
+    };
+    std::uint64_t end = encodeContextChannel(order, v, LebChannelKind::Data, stored, o.pageBits, o.threads,
+                                             share(0.0, 1.0), write, kLebHeaderBytes);
+    if (gradients)
+      end = encodeContextChannel(order, v, LebChannelKind::Gradients, stored, o.pageBits, o.threads, share(1.0, 3.0),
+                                 write, end);
+    write(0,
+          lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, gradients ? 2 : 1, end, o.coder, o.deriveGradients));
     return end;
   }
   std::vector<LebChannelKind> kinds{LebChannelKind::Data};
@@ -794,11 +803,11 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
     throw std::invalid_argument("decodeLebInto: the output does not match the stream's " + dimsText(s.dims) + " uint" +
                                 std::to_string(s.sampleBits) + (hasGradients ? " with gradients" : ""));
   const HzOrder order(s.grid);
-  if (s.coder == LebCoder::Context) {  // the data channel alone (parseLebStream); then any derived gradients
+  if (s.coder == LebCoder::Context) {  // the data channel and any gradients channel; then any derived gradients
     const double share = derive ? 0.5 : 1.0;
     LebProgress progress;
     if (window) progress = [&](double done) { window(share * done); };
-    decodeContextChannel(s, order, out, threads, progress);
+    decodeContextChannels(s, order, out, threads, progress);
     if (derive) deriveGradients(out, threads, window, {share, 1.0 - share});
     return;
   }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "reference/leb/context_codec.h"
+#include "reference/leb/context_gradient_coder.h"
 #include "reference/leb/context_value_coder.h"
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_page.h"
@@ -17,6 +18,23 @@ namespace {
 
 // Bricks of 4^3 points: the memo's slot order (leb_reader.h).
 constexpr int kBrickLog2 = 2;
+
+// A context page's values as the cache keeps them: values of 8 bits (an 8-bit stream's samples,
+// the gradients' components) as bytes, two to an int16 entry, so that a page costs its values'
+// bytes (the engine's pages of both channels at 2^16 fit the 64 MB of the benches); 16-bit samples
+// one to an entry. Read and written through unsigned char, which may alias any object.
+std::size_t contextPageEntries(std::size_t values, int valueBits) { return valueBits == 8 ? (values + 1) / 2 : values; }
+void setContextValue(std::vector<std::int16_t>& page, std::size_t i, int valueBits, std::int32_t v) {
+  if (valueBits == 8)
+    reinterpret_cast<unsigned char*>(page.data())[i] = static_cast<unsigned char>(v);
+  else
+    page[i] = static_cast<std::int16_t>(v);
+}
+std::int32_t contextValue(const std::vector<std::int16_t>& page, std::size_t i, int valueBits, bool isSigned) {
+  if (valueBits != 8) return static_cast<std::uint16_t>(page[i]);
+  const unsigned char b = reinterpret_cast<const unsigned char*>(page.data())[i];
+  return isSigned ? static_cast<std::int32_t>(static_cast<std::int8_t>(b)) : static_cast<std::int32_t>(b);
+}
 
 }  // namespace
 
@@ -84,9 +102,9 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   // takes its gradient from its neighbours' samples (below), so its split edge gives the rest; one
   // in the padding takes its prediction, as a padding point of a gradients channel does.
   const bool derive = stream_->derivedGradients && (need & 2u) != 0;
-  // A context stream's page holds the samples themselves (FORMAT.md, "Context pages"): a point
-  // inside the volume needs no split edge for its sample.
-  const unsigned fromEdge = inside ? need & ~(derive ? 2u : 0u) & ~(contextPages() ? 1u : 0u) : need;
+  // A context stream's pages hold the samples and the gradients themselves (FORMAT.md, "Context
+  // pages", "Context gradient pages"): a point inside the volume needs no split edge for them.
+  const unsigned fromEdge = inside ? need & ~(derive ? 2u : 0u) & ~(contextPages() ? 3u : 0u) : need;
   std::array<std::int32_t, 4> pred{0, 0, 0, 0};
   const LebPointClass pc = classifyPoint(grid, p);
   if (pc.level >= 0 && fromEdge != 0) {
@@ -110,7 +128,7 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
         // then finds the gradients' page in the cache (or decodes it again, where the budget
         // cannot hold it).
         const std::uint64_t gradientsKey = (page << 1) | static_cast<std::uint64_t>(LebChannelKind::Gradients);
-        if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients &&
+        if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients && !contextPages() &&
             !cache_.contains(gradientsKey)) {
           auto both = decodeChannelPagesPositions(*stream_, order_, page);
           cache_.get(gradientsKey, [&] { return std::move(both[1]); });
@@ -123,8 +141,9 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
         deltas = decoded.get();
       }
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;
-      if (contextPages())  // the data channel alone: its values' bits
-        have.v[0] = static_cast<std::uint16_t>((*deltas)[at]);
+      if (contextPages())  // the values themselves: the samples, or the gradients' int8
+        for (std::size_t k = 0; k < comps; ++k)
+          have.v[first + k] = contextValue(*deltas, at + k, c.valueBits, c.isSigned);
       else
         for (std::size_t k = 0; k < comps; ++k)
           have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);
@@ -149,23 +168,45 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
 
 std::vector<std::int16_t> LebReader::decodeContextPage(const LebChannel& c, std::uint64_t page) {
   const StoredPage bytes = storedPage(*stream_, c, page);
-  ContextPageReader reader(bytes.bytes, c.valueBits, stream_->pageBits, page, bytes.offset, bytes.name);
   const std::uint64_t begin = page << stream_->pageBits;
-  std::vector<std::int16_t> values(std::size_t{1} << stream_->pageBits, 0);
+  const auto comps = static_cast<std::size_t>(c.components);
+  std::vector<std::int16_t> values(contextPageEntries((std::size_t{1} << stream_->pageBits) * comps, c.valueBits), 0);
+  const auto get = [&](std::size_t i) { return contextValue(values, i, c.valueBits, c.isSigned); };
+  const auto set = [&](std::size_t i, std::int32_t v) { setContextValue(values, i, c.valueBits, v); };
   // A corner is coarser than its point: decoded before it in this page, or in an earlier page
   // (through the cache, recursively). Only a page that holds a coarser scale than its last point's
-  // can hold corners of its points (contextPagesNeededBelow names the page itself then).
+  // can hold corners of its points (contextPagesNeededBelow names the page itself then). The place
+  // of a corner in this page, or none.
   const bool cornersInPage = contextPagesNeededBelow(order_, stream_->pageBits, page) == page;
+  constexpr std::size_t kNone = ~std::size_t{0};
+  const auto placeInPage = [&](const GridPoint& q) -> std::size_t {
+    if (!cornersInPage) return kNone;
+    const std::uint64_t hq = order_.index(q);
+    return hq >= begin ? static_cast<std::size_t>(hq - begin) : kNone;
+  };
+  if (c.kind == LebChannelKind::Data) {
+    ContextPageReader reader(bytes.bytes, c.valueBits, stream_->pageBits, page, bytes.offset, bytes.name);
+    reader.decode(
+        order_, stream_->dims,
+        [&](const GridPoint& q) -> std::int32_t {
+          if (const std::size_t at = placeInPage(q); at != kNone) return get(at);
+          return valueAt(1u, q).v[0];
+        },
+        [&](std::uint64_t h, const GridPoint&, std::int32_t v) { set(static_cast<std::size_t>(h - begin), v); });
+    return values;
+  }
+  ContextGradientPageReader reader(bytes.bytes, stream_->pageBits, page, bytes.offset, bytes.name);
   reader.decode(
       order_, stream_->dims,
-      [&](const GridPoint& q) -> std::int32_t {
-        if (cornersInPage)
-          if (const std::uint64_t hq = order_.index(q); hq >= begin)
-            return static_cast<std::uint16_t>(values[static_cast<std::size_t>(hq - begin)]);
-        return valueAt(1u, q).v[0];
+      [&](const GridPoint& q) -> std::array<std::int8_t, 3> {
+        if (const std::size_t at = placeInPage(q); at != kNone)
+          return {static_cast<std::int8_t>(get(3 * at)), static_cast<std::int8_t>(get(3 * at + 1)),
+                  static_cast<std::int8_t>(get(3 * at + 2))};
+        const Known k = valueAt(2u, q);
+        return {static_cast<std::int8_t>(k.v[1]), static_cast<std::int8_t>(k.v[2]), static_cast<std::int8_t>(k.v[3])};
       },
-      [&](std::uint64_t h, const GridPoint&, std::int32_t v) {
-        values[static_cast<std::size_t>(h - begin)] = static_cast<std::int16_t>(v);
+      [&](std::uint64_t h, const GridPoint&, const std::array<std::int8_t, 3>& g) {
+        for (std::size_t k = 0; k < 3; ++k) set(static_cast<std::size_t>(h - begin) * 3 + k, g[k]);
       });
   return values;
 }

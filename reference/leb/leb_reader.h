@@ -16,11 +16,10 @@
 // query's own (emptied when the next query begins), so a point is still reconstructed at most
 // once per query, whatever the table's size. Neighbouring queries share their coarse ancestors,
 // so a query in a region already visited reconstructs little more than its own point.
-// A stream of the context coder (FORMAT.md, "Context pages") holds a page's samples rather than
-// their deltas: a point inside the volume is read from its page, and decoding a page reads its
-// points' corners outside it through the same memo and cache (they are coarser, so this recursion
-// too ends within the grid's levels); a point of the padding takes its split edge's prediction, as
-// in every stream.
+// A stream of the context coder (FORMAT.md, "Context pages", "Context gradient pages") holds a
+// page's samples and gradients rather than their deltas: a point inside the volume is read from its page, and decoding
+// a page reads its points' corners outside it through the same memo and cache (they are coarser, so this recursion too
+// ends within the grid's levels); a point of the padding takes its split edge's prediction, as in every stream.
 // Bit-identical to decodeLeb. A stream that derives its gradients (FORMAT.md, header byte 23)
 // gives a point's gradient from its six neighbours' samples, reconstructed (and memoised) the same
 // way: seven samples instead of one gradient.
@@ -93,10 +92,12 @@ class LebReader {
   // neighbours' samples (gradients.h, centralGradientAt) inside the volume, else the prediction.
   void deriveGradient(const GridPoint& p, bool inside, const std::array<std::int32_t, 4>& pred, Known& have);
   static unsigned channelBit(LebChannelKind kind) { return kind == LebChannelKind::Data ? 1u : 2u; }
-  // Whether the stream's pages hold samples (the context coder) rather than deltas.
+  // Whether the stream's pages hold values (the context coder) rather than deltas.
   bool contextPages() const { return stream_->coder == LebCoder::Context; }
-  // A context stream's page: its samples' bits at their places (2^pageBits entries, 0 for the
-  // padding), its points' corners outside the page reconstructed through valueAt.
+  // A context stream's page of channel c: its samples, or its gradients' three int8, at their
+  // places (2^pageBits x components values, 0 for the padding; 8-bit values packed two to an entry:
+  // contextValue in leb_reader.cpp reads them), its points' corners outside the page reconstructed
+  // through valueAt.
   std::vector<std::int16_t> decodeContextPage(const LebChannel& c, std::uint64_t page);
 
   // A memo slot: the point's linear index (all ones: empty), the query that wrote it, the data

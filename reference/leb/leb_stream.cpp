@@ -130,9 +130,6 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
                         (expected == LebCoder::Lead1 ? std::string("lead-1") : std::string(lebCoderName(expected))) +
                         "), got " + std::to_string(coder));
   s.coder = expected;
-  if (s.coder == LebCoder::Context && channelCount != 1)
-    r.fail(coderAt - 1, "channel_count: a version 4 stream (context coder) has the data channel alone, got " +
-                            std::to_string(channelCount) + " channels");
   // Byte 23, the gradients: 1 when they are derived from the data (then no gradients channel).
   const std::size_t gradientsAt = r.offset();
   s.derivedGradients = r.le<std::uint8_t>("gradients", 0, 1) == 1;
@@ -200,8 +197,9 @@ LebStream parseLebStream(std::string_view bytes, std::shared_ptr<const void> own
     // Every delta costs at least one bit with lead-1 (no code is shorter) and 2^-14 bytes with the
     // adaptive and the context coders (their zero decision: FORMAT.md, "Adaptive pages"), so a
     // stream too short for its volume is refused here, before a decoder allocates anything for it.
-    const std::uint64_t deltas =
-        static_cast<std::uint64_t>(sampleCount(s.dims)) * static_cast<std::uint64_t>(c.components);
+    // The context coder's gradients begin with one decision a vector ("Context gradient pages").
+    const std::uint64_t deltas = static_cast<std::uint64_t>(sampleCount(s.dims)) *
+                                 static_cast<std::uint64_t>(s.coder == LebCoder::Context ? 1 : c.components);
     const std::uint64_t perByte = s.coder == LebCoder::Lead1 ? 8 : kAdaptiveDeltasPerByteBound;
     if (payload < (deltas + perByte - 1) / perByte)
       r.fail(payloadAt, "payload_bytes: " + std::to_string(payload) + " bytes cannot hold the " +

@@ -29,8 +29,8 @@ enum class LebChannelKind : std::uint8_t { Data = 0, Gradients = 1 };
 // The entropy stage of a stream's pages (FORMAT.md, header byte 22): the paper's lead-1 Huffman
 // code (lead1_coder.h; version 2 streams) or voxref's adaptive range coder
 // (adaptive_delta_coder.h; version 3), which code the same deltas; or voxref's context coder of
-// the samples (context_value_coder.h; version 4), whose pages decode with their corners' values
-// and which stores the data channel alone.
+// the samples and the gradients (context_value_coder.h, context_gradient_coder.h; version 4), whose
+// pages decode with their corners' values.
 enum class LebCoder : std::uint8_t { Lead1 = 0, Adaptive = 1, Context = 2 };
 std::string_view lebCoderName(LebCoder coder);  // "lead1", "adaptive", "context"
 

@@ -1,17 +1,19 @@
-// libFuzzer target: the pages of voxref's context coder (reference/leb/context_value_coder.h;
-// reference/leb/FORMAT.md, "Context pages"). A page is untrusted bytes; its points' corners outside
-// it come from a known volume, as a decoder has them from the pages before.
+// libFuzzer target: the pages of voxref's context coder, of samples and of gradients
+// (reference/leb/context_value_coder.h, context_gradient_coder.h; reference/leb/FORMAT.md, "Context
+// pages", "Context gradient pages"). A page is untrusted bytes; its points' corners outside it come
+// from a known volume, as a decoder has them from the pages before.
 //
-// Input: six bytes that pick the sample bits, the extents, the page bits and one of the volume's
-// stored pages (context_page_input.h, shared with the seed maker), then the page's bytes.
+// Input: six bytes that pick the channel, the sample bits, the extents, the page bits and one of
+// the volume's stored pages (context_page_input.h, shared with the seed maker), then the page's bytes.
 // Contract under test:
-// - ContextPageReader's constructor and decode() either succeed or throw StreamError; nothing else
+// - the readers' constructors and decode() either succeed or throw StreamError; nothing else
 //   escapes, nothing reads out of bounds (ASan) or has undefined behaviour (UBSan);
 // - every value decoded lies in [0, 2^b);
-// - a page that decodes completely holds values that encodeContextPage codes into a page that
-//   decodes to the same values (the bytes may differ: the last bytes of a range-coded page are
-//   not unique).
+// - a page that decodes completely holds values (vectors) that encodeContextPage
+//   (encodeContextGradientPage) codes into a page that decodes to the same values (the bytes may differ: the last bytes
+//   of a range-coded page are not unique).
 // Size cap: 12^3 samples, pages of at most 2^6 points.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
@@ -20,6 +22,7 @@
 #include <vector>
 
 #include "reference/common/byte_stream.h"
+#include "reference/leb/context_gradient_coder.h"
 #include "reference/leb/context_value_coder.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
@@ -47,6 +50,17 @@ bool decodePage(const std::string& page, const HzOrder& order, const voxref::fuz
   return true;
 }
 
+// The same for a page of gradients (any int8 triple is a valid vector).
+bool decodeGradientPage(const std::string& page, const HzOrder& order, const voxref::fuzz::ContextPageInput& in,
+                        std::vector<std::array<std::int8_t, 3>>& vectors) {
+  try {
+    voxref::fuzz::decodeInputGradientPage(page, order, in, vectors);
+  } catch (const StreamError&) {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -55,6 +69,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const voxref::fuzz::ContextPageInput in = voxref::fuzz::contextPageInput(order, data);
   const std::string page(reinterpret_cast<const char*>(data) + voxref::fuzz::kContextPageHeader,
                          size - voxref::fuzz::kContextPageHeader);
+  if (in.gradients) {
+    std::vector<std::array<std::int8_t, 3>> vectors = in.vectors;
+    if (!decodeGradientPage(page, order, in, vectors)) return 0;
+    const std::string again = encodeContextGradientPage(
+        order, in.dims, in.pageBits, in.page, [&](const GridPoint& q) { return vectors[volumeIndex(q, in.dims)]; });
+    std::vector<std::array<std::int8_t, 3>> back = in.vectors;
+    if (!decodeGradientPage(again, order, in, back) || back != vectors)
+      violated("encodeContextGradientPage of a page's vectors does not decode to them");
+    return 0;
+  }
   std::vector<std::int32_t> values = in.volume;
   if (!decodePage(page, order, in, values)) return 0;
   const std::string again = encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page,

@@ -5,8 +5,8 @@
 //   make_fuzz_seeds timevarying DIR   .vxtv containers (serializeTimeVarying of encoded series)
 //   make_fuzz_seeds huffman DIR       lead-1 code tables with a page each, and symbol counts
 //   make_fuzz_seeds adaptive_page DIR pages of the adaptive delta coder, every shape
-//   make_fuzz_seeds context_page DIR  pages of the context coder of small volumes (context_page_input.h)
-//   make_fuzz_seeds scene DIR         scene JSON: the built-in cases' scenes and the iso scenes
+//   make_fuzz_seeds context_page DIR  pages of the context coder of small volumes, samples and gradients
+//   (context_page_input.h) make_fuzz_seeds scene DIR         scene JSON: the built-in cases' scenes and the iso scenes
 //   make_fuzz_seeds raw_volume DIR    raw volumes, plain and gzip (the target's input layout)
 //   make_fuzz_seeds manifest DIR      fixture manifests (the layout generateIsoFixtures writes)
 //   make_fuzz_seeds results DIR       results.json files (resultsJson)
@@ -17,6 +17,7 @@
 // first checks.
 #include <zlib.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -42,6 +43,7 @@
 #include "conformance/modules/timevarying/timevarying_scene.h"
 #include "reference/common/byte_stream.h"
 #include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/context_gradient_coder.h"
 #include "reference/leb/context_value_coder.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/lead1_coder.h"
@@ -387,19 +389,32 @@ void contextPage() {
     const auto* h = reinterpret_cast<const std::uint8_t*>(header.data());
     const ref::HzOrder order(fuzz::contextPageGrid(h));
     const fuzz::ContextPageInput in = fuzz::contextPageInput(order, h);
-    const auto valueOf = [&](const ref::GridPoint& q) { return in.volume[ref::volumeIndex(q, in.dims)]; };
-    const std::string page = ref::encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page, valueOf);
-    std::vector<std::int32_t> back = in.volume;
-    fuzz::decodeInputPage(page, order, in, back);
-    if (back != in.volume) throw std::runtime_error(name + " does not read back");
+    std::string page;
+    if (in.gradients) {
+      page = ref::encodeContextGradientPage(order, in.dims, in.pageBits, in.page, [&](const ref::GridPoint& q) {
+        return in.vectors[ref::volumeIndex(q, in.dims)];
+      });
+      std::vector<std::array<std::int8_t, 3>> back = in.vectors;
+      fuzz::decodeInputGradientPage(page, order, in, back);
+      if (back != in.vectors) throw std::runtime_error(name + " does not read back");
+    } else {
+      const auto valueOf = [&](const ref::GridPoint& q) { return in.volume[ref::volumeIndex(q, in.dims)]; };
+      page = ref::encodeContextPage(order, in.dims, in.bits, in.pageBits, in.page, valueOf);
+      std::vector<std::int32_t> back = in.volume;
+      fuzz::decodeInputPage(page, order, in, back);
+      if (back != in.volume) throw std::runtime_error(name + " does not read back");
+    }
     write(name, header + page);
   };
-  // bits, extents (minus one), page bits (minus four), page selector
+  // channel and bits, extents (minus one), page bits (minus four), page selector
   seed("cube8.context", std::string{0, 8, 8, 8, 0, 0});
   seed("cube8_last_page.context", std::string{0, 8, 8, 8, 0, 100});
   seed("thin16.context", std::string{1, 11, 0, 2, 2, 1});
   seed("slab8.context", std::string{0, 9, 5, 0, 1, 3});
   seed("single.context", std::string{0, 0, 0, 0, 0, 0});
+  seed("cube8.gradients.context", std::string{2, 8, 8, 8, 0, 0});
+  seed("slab8_last_page.gradients.context", std::string{2, 9, 5, 0, 1, 100});
+  seed("single.gradients.context", std::string{2, 0, 0, 0, 0, 0});
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // Writes a seed corpus of valid LEB streams for the fuzz target: small volumes of each kind the
 // decoder handles (8 and 16 bits, with and without gradients, padded and not, tiny pages), with
-// each coder (lead-1: version 2; adaptive: version 3; context: version 4, without a gradients channel).
+// each coder (lead-1: version 2; adaptive: version 3; context: version 4, with and without a
+// gradients channel).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -48,5 +49,7 @@ int main(int argc, char** argv) {
   write("context_derived_smooth.vxleb", smooth, 8, 4, true, LebCoder::Context, true);  // version 4
   write("context_noise.vxleb", noise, 8, 6, false, LebCoder::Context);
   write("context_wide16.vxleb", wide, 16, 4, false, LebCoder::Context);
+  write("context_smooth_gradients.vxleb", smooth, 8, 4, true, LebCoder::Context);  // "Context gradient pages"
+  write("context_noise_gradients.vxleb", noise, 8, 6, true, LebCoder::Context);
   return 0;
 }

@@ -1,0 +1,168 @@
+#include "reference/leb/context_gradient_coder.h"
+
+#include <cmath>
+#include <cstdlib>
+
+#include "reference/common/byte_stream.h"
+#include "reference/leb/lead1_coder.h"
+#include "reference/leb/prediction.h"
+
+namespace voxref::ref {
+
+int sphereMagnitude(int gx, int gy) {
+  const int t = 127 * 127 - gx * gx - gy * gy;
+  if (t <= 0) return 0;
+  // The integer square root m (m^2 <= t < (m + 1)^2), from the double root corrected by integers;
+  // then sqrt(t) > m + 1/2 exactly when t > m^2 + m (t and m are integers).
+  int m = static_cast<int>(std::sqrt(static_cast<double>(t)));
+  while (m * m > t) --m;
+  while ((m + 1) * (m + 1) <= t) ++m;
+  return t > m * m + m ? m + 1 : m;
+}
+
+ContextGradientPageState::ContextGradientPageState(int pageBits, std::uint64_t page)
+    : xy_{DeltaDecisionModels(8, kContextContexts, kContextSignContexts),
+          DeltaDecisionModels(8, kContextContexts, kContextSignContexts)},
+      z_(8, kGradientMagnitudeContexts, 1),
+      zero_(kGradientZeroContexts),
+      zSign_(kGradientSignContexts),
+      begin_(page << pageBits),
+      zeroVector_(std::size_t{1} << pageBits, 0),
+      signedSymbol_{std::vector<std::int8_t>(std::size_t{1} << pageBits, 0),
+                    std::vector<std::int8_t>(std::size_t{1} << pageBits, 0)} {}
+
+ContextGradientPageState::Contexts ContextGradientPageState::contexts(const HzOrder& order, std::uint64_t h,
+                                                                      const GridPoint& p, const LebPointClass& c,
+                                                                      const GradientCorners& corners) const {
+  // FORMAT.md, "Context gradient pages": the neighbours of "Context pages", p's own class at -2h on
+  // each axis, counted when they lie in p's page.
+  std::uint64_t below[3];
+  order.indicesBelow(h, p, c, below);
+  int zeros = 0;
+  std::array<int, 2> symbols{0, 0}, signs{0, 0};
+  for (const std::uint64_t hq : below) {
+    if (hq == HzOrder::kNoIndex || hq < begin_ || hq - begin_ >= zeroVector_.size()) continue;
+    const auto at = static_cast<std::size_t>(hq - begin_);
+    zeros += zeroVector_[at];
+    for (std::size_t a = 0; a < 2; ++a) {
+      const int s = signedSymbol_[a][at];
+      symbols[a] += s < 0 ? -s : s;
+      signs[a] += (s > 0) - (s < 0);
+    }
+  }
+  Contexts x;
+  x.zero = 4 * corners.zeroCorners + zeros;
+  for (std::size_t a = 0; a < 2; ++a)
+    x.component[a] = {
+        std::min(symbols[a], kContextNeighbourSums - 1) * kContextRangeBuckets + corners.component[a].rangeBucket,
+        std::clamp(signs[a], -3, 3) + 3};
+  const std::int32_t zMean = corners.component[2].prediction;
+  x.zSign = zMean < 128 ? 0 : zMean == 128 ? 1 : 2;
+  return x;
+}
+
+void ContextGradientPageState::recordZero(std::uint64_t h) { zeroVector_[static_cast<std::size_t>(h - begin_)] = 1; }
+
+void ContextGradientPageState::record(std::uint64_t h, const std::array<int, 2>& symbol,
+                                      const std::array<bool, 2>& negative) {
+  const auto at = static_cast<std::size_t>(h - begin_);
+  for (std::size_t a = 0; a < 2; ++a)
+    signedSymbol_[a][at] = static_cast<std::int8_t>(negative[a] ? -symbol[a] : symbol[a]);
+}
+
+namespace {
+
+// What decoding a vector found wrong (the encoder never makes one): the decoder's message.
+enum class GradientProblem { None, ResidualRange, ZeroFlagged, SignMismatch };
+
+// One component's residual decisions, as the samples' (context_value_coder.cpp): the value v
+// (biased, 0..255; the encoder's) from its prediction. Returns the value (the decoder's) and sets
+// `symbol` and `negative` to the residual's.
+template <class Bits>
+std::int32_t codeComponent(Bits bits, DeltaDecisionModels& m, const ContextPageState::Contexts& ctx,
+                           std::int32_t prediction, std::int32_t v, int& symbol, bool& negative,
+                           GradientProblem& problem) {
+  const std::int32_t r = predictionDelta(v, prediction, 8);
+  int neg = r < 0 ? 1 : 0;
+  std::uint32_t magnitude = static_cast<std::uint32_t>(std::abs(r));
+  symbol = codeDeltaDecisions(bits, m, ctx.context, ctx.signContext, lead1Symbol(r), neg, magnitude);
+  if (symbol == 8 && (magnitude != 128 || !neg)) problem = GradientProblem::ResidualRange;
+  negative = neg != 0;
+  const std::int32_t decoded = symbol == 0 ? 0
+                               : neg       ? -static_cast<std::int32_t>(magnitude)
+                                           : static_cast<std::int32_t>(magnitude);
+  return wrapSample(prediction + decoded, 8, false);
+}
+
+// FORMAT.md, "Context gradient pages": one vector's decisions, in one function for the encoder
+// (EncodeBits: g is the vector, and stays) and the decoder (DecodeBits: g is set). Records what the
+// neighbours' contexts need.
+template <class Bits>
+GradientProblem codeContextGradient(Bits bits, ContextGradientPageState& state, std::uint64_t h,
+                                    const GradientPoint& point, std::array<std::int8_t, 3>& g) {
+  const ContextGradientPageState::Contexts& ctx = point.contexts;
+  // 1. The zero vector.
+  const int isZero = g[0] == 0 && g[1] == 0 && g[2] == 0;
+  if (bits.bit(state.zeroModel(ctx.zero), isZero) == 1) {
+    g = {0, 0, 0};
+    state.recordZero(h);
+    return GradientProblem::None;
+  }
+  GradientProblem problem = GradientProblem::None;
+  // 2. gx and gy, each from its corners' mean.
+  std::array<int, 2> symbol{0, 0};
+  std::array<bool, 2> negative{false, false};
+  for (std::size_t a = 0; a < 2; ++a)
+    g[a] = static_cast<std::int8_t>(codeComponent(bits, state.componentModels(static_cast<int>(a)), ctx.component[a],
+                                                  point.corners.component[a].prediction, biasedComponent(g[a]),
+                                                  symbol[a], negative[a], problem) -
+                                    128);
+  state.record(h, symbol, negative);
+  // 3. gz's sign, 4. gz from the sphere.
+  const int magnitude = sphereMagnitude(g[0], g[1]);
+  const int zNegative = bits.bit(state.zSignModel(ctx.zSign), g[2] < 0 ? 1 : 0);
+  const ContextPageState::Contexts zContext{contextRangeBucket(magnitude), 0};
+  int zSymbol = 0;
+  bool zResidualNegative = false;
+  g[2] = static_cast<std::int8_t>(codeComponent(bits, state.zModels(), zContext,
+                                                (zNegative ? -magnitude : magnitude) + 128, biasedComponent(g[2]),
+                                                zSymbol, zResidualNegative, problem) -
+                                  128);
+  if (problem != GradientProblem::None) return problem;
+  if ((g[2] < 0) != (zNegative != 0)) return GradientProblem::SignMismatch;
+  if (g[0] == 0 && g[1] == 0 && g[2] == 0) return GradientProblem::ZeroFlagged;
+  return GradientProblem::None;
+}
+
+}  // namespace
+
+void encodeContextGradient(RangeEncoder& out, ContextGradientPageState& state, std::uint64_t h,
+                           const GradientPoint& point, const std::array<std::int8_t, 3>& g) {
+  std::array<std::int8_t, 3> v = g;
+  codeContextGradient(EncodeBits{out}, state, h, point, v);
+}
+
+ContextGradientPageReader::ContextGradientPageReader(std::string_view bytes, int pageBits, std::uint64_t page,
+                                                     std::size_t streamOffset, std::string what)
+    : state_(pageBits, page), input_(bytes, streamOffset, std::move(what)), pageBits_(pageBits) {}
+
+std::array<std::int8_t, 3> ContextGradientPageReader::next(std::uint64_t h, const GradientPoint& point) {
+  std::array<std::int8_t, 3> g{0, 0, 0};
+  const GradientProblem problem = codeContextGradient(DecodeBits{input_.decoder()}, state_, h, point, g);
+  input_.checkInside(read_);
+  const std::string at = "gradient " + std::to_string(read_) + ": ";
+  switch (problem) {
+    case GradientProblem::None:
+      break;
+    case GradientProblem::ResidualRange:
+      input_.fail(at + "a residual of +128 is outside the 8-bit range");
+    case GradientProblem::SignMismatch:
+      input_.fail(at + "gz is " + std::to_string(g[2]) + ", against its coded sign");
+    case GradientProblem::ZeroFlagged:
+      input_.fail(at + "(0, 0, 0) coded as a vector that is not zero");
+  }
+  ++read_;
+  return g;
+}
+
+}  // namespace voxref::ref
