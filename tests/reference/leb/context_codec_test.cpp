@@ -139,11 +139,11 @@ TEST(ContextCodec, APageNeedsOnlyThePagesItsWaveFollows) {
     }
 }
 
-// Stored gradients (reference/leb/FORMAT.md, "Context gradient pages"): the central differences' unit vectors,
-// the paper's diffused ones, and arbitrary int8 triples decode to themselves through the
-// whole-volume decoder (the same bytes for one and two threads) and through random access, where a
-// point of the padding takes its split edge's prediction, as the lead-1 stream storing the same
-// gradients gives it.
+// Stored gradients (reference/leb/FORMAT.md, "Context gradient pages"): the central differences'
+// unit vectors, the paper's diffused ones, and arbitrary int8 triples decode to themselves through
+// the whole-volume decoder (the same bytes for one and two threads) and through random access,
+// where a point of the padding takes its split edge's prediction, as the lead-1 stream storing the
+// same gradients gives it.
 TEST(ContextCodec, StoredGradientsRoundTripThroughBothDecoders) {
   for (ContextCase& c : contextCases()) {
     std::mt19937 rng(static_cast<unsigned>(sampleCount(c.volume.dims())));

@@ -87,10 +87,11 @@ TEST_F(ContextGradientPage, AnyVectorsDecodeToThemselves) {
   }
 }
 
-// A one-point volume's page written decision by decision (FORMAT.md, "Context gradient pages"): the
-// root corner's contexts (zero context 0, component contexts 0 and sign context 3, gz's sign
-// context 1) and predictions (128 biased, so 0), gx and gy of 0, gz's sign, then gz's residual of
-// magnitude `zMagnitude` (sign `zResidualNegative`) from (sign) sphereMagnitude(0, 0) = 127.
+// A one-point volume's page written decision by decision (reference/leb/FORMAT.md, "Context
+// gradient pages"): the root corner's contexts (zero context 0, component contexts 0 and sign
+// context 3, gz's sign context 1) and predictions (128 biased, so 0), gx and gy of 0, gz's sign,
+// then gz's residual of magnitude `zMagnitude` (sign `zResidualNegative`) from (sign)
+// sphereMagnitude(0, 0) = 127.
 std::string onePointPage(int zNegative, int zSymbol, int zResidualNegative, std::uint32_t zMagnitude) {
   ContextGradientPageState state(4, 0);
   RangeEncoder out;
