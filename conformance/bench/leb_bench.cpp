@@ -8,6 +8,8 @@
 #include <memory>
 #include <random>
 #include <stdexcept>
+#include <string>
+#include <tuple>
 
 #include "conformance/bench/baselines.h"
 #include "conformance/bench/leb_coder_bench.h"
@@ -134,28 +136,37 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
                              {"decode", toJson(derived.decode)}});
 
     // The paper's Table 1 conditions for the gradients: diffused before they are quantized
-    // (gradients.h, diffusedQuantizedGradients), each stream decoded and checked bit for bit.
+    // (gradients.h, diffusedQuantizedGradients), each stream decoded and checked bit for bit: the
+    // paper's coder, and voxref's context coder (reference/leb/FORMAT.md, "Context pages",
+    // "Context gradient pages"), beyond it.
     for (const int steps : kPaperDiffusionSteps) {
       const std::vector<std::int8_t> g = ref::diffusedQuantizedGradients(d.volume, steps);
-      ref::LebEncodeOptions options;
-      options.threads = o.threads;
-      std::string bytes =
-          ref::encodeLeb(ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), g.data()}, options);
-      const ref::LebStream s = ref::parseLebStream(std::move(bytes));
-      const ref::LebDecoded back = ref::decodeLeb(s, o.threads);
-      if (back.data.data() != d.volume.data() || back.gradients != g)
-        throw std::runtime_error("LEB round trip with diffused gradients failed on " + d.name);
-      const ref::LebStats ds = ref::lebStats(s);
-      const std::string codec =
-          "LEB lead-1, gradients diffused " + std::to_string(steps) + " steps (paper's conditions)";
-      t.rows.push_back({d.name, codec, ratio(ds.ratio()), ratio(ds.channelRatio(ref::LebChannelKind::Data)),
-                        ratio(ds.channelRatio(ref::LebChannelKind::Gradients)), std::to_string(ds.streamBytes), "-",
-                        "-", paper});
-      row["codecs"].push_back({{"codec", codec},
-                               {"diffusion_steps", steps},
-                               {"bytes", ds.streamBytes},
-                               {"gradient_ratio", ds.channelRatio(ref::LebChannelKind::Gradients)},
-                               {"ratio", ds.ratio()}});
+      for (const auto& [coder, pageBits, name] :
+           {std::tuple{ref::LebCoder::Lead1, 12, "LEB lead-1"},
+            std::tuple{ref::LebCoder::Context, 16, "LEB context (voxref's; pages of 2^16)"}}) {
+        ref::LebEncodeOptions options;
+        options.threads = o.threads;
+        options.coder = coder;
+        options.pageBits = pageBits;
+        std::string bytes = ref::encodeLeb(
+            ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), g.data()}, options);
+        const ref::LebStream s = ref::parseLebStream(std::move(bytes));
+        const ref::LebDecoded back = ref::decodeLeb(s, o.threads);
+        if (back.data.data() != d.volume.data() || back.gradients != g)
+          throw std::runtime_error("LEB round trip with diffused gradients failed on " + d.name);
+        const ref::LebStats ds = ref::lebStats(s);
+        const std::string codec =
+            std::string(name) + ", gradients diffused " + std::to_string(steps) + " steps (paper's conditions)";
+        t.rows.push_back({d.name, codec, ratio(ds.ratio()), ratio(ds.channelRatio(ref::LebChannelKind::Data)),
+                          ratio(ds.channelRatio(ref::LebChannelKind::Gradients)), std::to_string(ds.streamBytes), "-",
+                          "-", paper});
+        row["codecs"].push_back({{"codec", codec},
+                                 {"coder", std::string(ref::lebCoderName(coder))},
+                                 {"diffusion_steps", steps},
+                                 {"bytes", ds.streamBytes},
+                                 {"gradient_ratio", ds.channelRatio(ref::LebChannelKind::Gradients)},
+                                 {"ratio", ds.ratio()}});
+      }
     }
 
     // The same prediction, coded by zstd instead of lead-1 Huffman: separates predictor and coder.
@@ -196,7 +207,9 @@ BenchTable table1(const BenchOptions& o, const std::vector<LebDataset>& sets) {
       "by diffusion before quantizing them and gives neither the scheme nor its length; the rows 'gradients diffused "
       "N steps' take voxref's explicit scheme (diffusedQuantizedGradients: N steps of g += (1/6) sum of the 6 "
       "neighbours' differences, no flux through the faces), the only change from the row above, and are the ones to "
-      "hold against the paper's Grad column. LEB counts the whole stream: header, code tables, page table and "
+      "hold against the paper's Grad column; 'LEB context' codes the same samples and gradients with voxref's context "
+      "coder (reference/leb/FORMAT.md, 'Context pages', 'Context gradient pages'), beyond the paper. LEB counts the "
+      "whole stream: header, code tables, page table and "
       "per-page CRC-32, payload; "
       "padding to (2^k+1)^3 costs no payload and is not in the raw bytes. Data and gradients are coded as two channels "
       "with a code each "
