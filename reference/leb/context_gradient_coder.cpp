@@ -1,10 +1,8 @@
 #include "reference/leb/context_gradient_coder.h"
 
 #include <cmath>
-#include <cstdlib>
 
 #include "reference/common/byte_stream.h"
-#include "reference/leb/lead1_coder.h"
 #include "reference/leb/prediction.h"
 
 namespace voxref::ref {
@@ -75,25 +73,6 @@ namespace {
 // What decoding a vector found wrong (the encoder never makes one): the decoder's message.
 enum class GradientProblem { None, ResidualRange, ZeroFlagged, SignMismatch };
 
-// One component's residual decisions, as the samples' (context_value_coder.cpp): the value v
-// (biased, 0..255; the encoder's) from its prediction. Returns the value (the decoder's) and sets
-// `symbol` and `negative` to the residual's.
-template <class Bits>
-std::int32_t codeComponent(Bits bits, DeltaDecisionModels& m, const ContextPageState::Contexts& ctx,
-                           std::int32_t prediction, std::int32_t v, int& symbol, bool& negative,
-                           GradientProblem& problem) {
-  const std::int32_t r = predictionDelta(v, prediction, 8);
-  int neg = r < 0 ? 1 : 0;
-  std::uint32_t magnitude = static_cast<std::uint32_t>(std::abs(r));
-  symbol = codeDeltaDecisions(bits, m, ctx.context, ctx.signContext, lead1Symbol(r), neg, magnitude);
-  if (symbol == 8 && (magnitude != 128 || !neg)) problem = GradientProblem::ResidualRange;
-  negative = neg != 0;
-  const std::int32_t decoded = symbol == 0 ? 0
-                               : neg       ? -static_cast<std::int32_t>(magnitude)
-                                           : static_cast<std::int32_t>(magnitude);
-  return wrapSample(prediction + decoded, 8, false);
-}
-
 // FORMAT.md, "Context gradient pages": one vector's decisions, in one function for the encoder
 // (EncodeBits: g is the vector, and stays) and the decoder (DecodeBits: g is set). Records what the
 // neighbours' contexts need.
@@ -108,27 +87,26 @@ GradientProblem codeContextGradient(Bits bits, ContextGradientPageState& state, 
     state.recordZero(h);
     return GradientProblem::None;
   }
-  GradientProblem problem = GradientProblem::None;
-  // 2. gx and gy, each from its corners' mean.
+  // 2. gx and gy, each from its corners' mean, as the samples are coded; 3. gz's sign, 4. gz from
+  // the sphere.
+  bool inRange = true;
   std::array<int, 2> symbol{0, 0};
   std::array<bool, 2> negative{false, false};
-  for (std::size_t a = 0; a < 2; ++a)
-    g[a] = static_cast<std::int8_t>(codeComponent(bits, state.componentModels(static_cast<int>(a)), ctx.component[a],
-                                                  point.corners.component[a].prediction, biasedComponent(g[a]),
-                                                  symbol[a], negative[a], problem) -
-                                    128);
+  for (std::size_t a = 0; a < 2; ++a) {
+    const ContextResidual r = codeContextResidual(bits, state.componentModels(static_cast<int>(a)), ctx.component[a],
+                                                  point.corners.component[a].prediction, biasedComponent(g[a]));
+    g[a] = static_cast<std::int8_t>(r.value - 128);
+    symbol[a] = r.symbol;
+    negative[a] = r.negative;
+    inRange = inRange && r.inRange(8);
+  }
   state.record(h, symbol, negative);
-  // 3. gz's sign, 4. gz from the sphere.
   const int magnitude = sphereMagnitude(g[0], g[1]);
   const int zNegative = bits.bit(state.zSignModel(ctx.zSign), g[2] < 0 ? 1 : 0);
-  const ContextPageState::Contexts zContext{contextRangeBucket(magnitude), 0};
-  int zSymbol = 0;
-  bool zResidualNegative = false;
-  g[2] = static_cast<std::int8_t>(codeComponent(bits, state.zModels(), zContext,
-                                                (zNegative ? -magnitude : magnitude) + 128, biasedComponent(g[2]),
-                                                zSymbol, zResidualNegative, problem) -
-                                  128);
-  if (problem != GradientProblem::None) return problem;
+  const ContextResidual z = codeContextResidual(bits, state.zModels(), {contextRangeBucket(magnitude), 0},
+                                                (zNegative ? -magnitude : magnitude) + 128, biasedComponent(g[2]));
+  g[2] = static_cast<std::int8_t>(z.value - 128);
+  if (!inRange || !z.inRange(8)) return GradientProblem::ResidualRange;
   if ((g[2] < 0) != (zNegative != 0)) return GradientProblem::SignMismatch;
   if (g[0] == 0 && g[1] == 0 && g[2] == 0) return GradientProblem::ZeroFlagged;
   return GradientProblem::None;

@@ -4,7 +4,6 @@
 #include <stdexcept>
 
 #include "reference/common/byte_stream.h"
-#include "reference/leb/lead1_coder.h"
 
 namespace voxref::ref {
 
@@ -47,14 +46,9 @@ void ContextPageState::record(std::uint64_t h, int symbol, bool negative) {
 
 void encodeContextValue(RangeEncoder& out, ContextPageState& state, std::uint64_t h, const ContextPoint& point,
                         std::int32_t value) {
-  const int b = state.models().valueBits();
-  const std::int32_t r = predictionDelta(value, point.prediction, b);  // the residual, b-bit two's complement
-  int negative = r < 0 ? 1 : 0;
-  std::uint32_t magnitude = static_cast<std::uint32_t>(r < 0 ? -static_cast<std::int64_t>(r) : r);
-  const int symbol = lead1Symbol(r);
-  codeDeltaDecisions(EncodeBits{out}, state.models(), point.contexts.context, point.contexts.signContext, symbol,
-                     negative, magnitude);
-  state.record(h, symbol, negative != 0);
+  const ContextResidual r =
+      codeContextResidual(EncodeBits{out}, state.models(), point.contexts, point.prediction, value);
+  state.record(h, r.symbol, r.negative);
 }
 
 ContextPageInput::ContextPageInput(std::string_view bytes, std::size_t streamOffset, std::string what)
@@ -84,21 +78,16 @@ ContextPageReader::ContextPageReader(std::string_view bytes, int valueBits, int 
     : state_(valueBits, pageBits, page), input_(bytes, streamOffset, std::move(what)), pageBits_(pageBits) {}
 
 std::int32_t ContextPageReader::next(std::uint64_t h, const ContextPoint& point) {
-  int negative = 0;
-  std::uint32_t magnitude = 0;
-  const int s = codeDeltaDecisions(DecodeBits{input_.decoder()}, state_.models(), point.contexts.context,
-                                   point.contexts.signContext, 0, negative, magnitude);
+  const ContextResidual r =
+      codeContextResidual(DecodeBits{input_.decoder()}, state_.models(), point.contexts, point.prediction, 0);
   input_.checkInside(read_);
   const int b = state_.models().valueBits();
-  if (s == b && (magnitude != (1u << (b - 1)) || !negative))
-    input_.fail("value " + std::to_string(read_) + ": residual magnitude " + std::to_string(magnitude) +
-                (negative ? "" : " (+)") + " is outside the " + std::to_string(b) + "-bit range");
-  state_.record(h, s, negative != 0);
+  if (!r.inRange(b))
+    input_.fail("value " + std::to_string(read_) + ": residual magnitude " + std::to_string(r.magnitude) +
+                (r.negative ? "" : " (+)") + " is outside the " + std::to_string(b) + "-bit range");
+  state_.record(h, r.symbol, r.negative);
   ++read_;
-  const std::int32_t r = s == 0     ? 0
-                         : negative ? -static_cast<std::int32_t>(magnitude)
-                                    : static_cast<std::int32_t>(magnitude);
-  return wrapSample(point.prediction + r, b, false);
+  return r.value;
 }
 
 }  // namespace voxref::ref

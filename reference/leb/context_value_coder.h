@@ -31,6 +31,7 @@
 #include "reference/common/volume.h"
 #include "reference/leb/delta_decisions.h"
 #include "reference/leb/hz_order.h"
+#include "reference/leb/lead1_coder.h"
 #include "reference/leb/prediction.h"
 
 namespace voxref::ref {
@@ -140,6 +141,37 @@ ContextPoint contextPoint(const HzOrder& order, const Dims3& dims, const Context
   const CornerPrediction cp = cornerPrediction(p, scaleLog2, oddAxes, dims, valueOf);
   const LebPointClass c{level, scaleLog2, std::popcount(oddAxes) - 1, oddAxes};
   return {cp.prediction, state.contexts(order, h, p, c, cp.rangeBucket)};
+}
+
+// One value's residual under the models m (their value bits b): r = (value - prediction) mod 2^b,
+// read as a b-bit two's complement value, and its decisions (delta_decisions.h) with contexts ctx,
+// in one function for the encoder (EncodeBits: `value` is coded) and the decoder (DecodeBits:
+// `value` is ignored, the result's value is read). The samples' coder and the gradients'
+// components (context_gradient_coder.h) both code their values with it.
+struct ContextResidual {
+  std::int32_t value = 0;  // (prediction + r) mod 2^b
+  int symbol = 0;          // the bit width of |r|
+  bool negative = false;
+  std::uint32_t magnitude = 0;  // |r|; for the decoder, a symbol of b with a magnitude other than
+                                // 2^(b-1), or not negative, lies outside the b-bit range
+  bool inRange(int b) const { return symbol < b || (magnitude == (1u << (b - 1)) && negative); }
+};
+template <class Bits>
+ContextResidual codeContextResidual(Bits bits, DeltaDecisionModels& m, const ContextPageState::Contexts& ctx,
+                                    std::int32_t prediction, std::int32_t value) {
+  const int b = m.valueBits();
+  const std::int32_t r = predictionDelta(value, prediction, b);
+  int negative = r < 0 ? 1 : 0;
+  std::uint32_t magnitude = static_cast<std::uint32_t>(r < 0 ? -static_cast<std::int64_t>(r) : r);
+  ContextResidual out;
+  out.symbol = codeDeltaDecisions(bits, m, ctx.context, ctx.signContext, lead1Symbol(r), negative, magnitude);
+  out.negative = negative != 0;
+  out.magnitude = out.symbol == 0 ? 0 : magnitude;
+  const std::int32_t decoded = out.symbol == 0 ? 0
+                               : negative      ? -static_cast<std::int32_t>(magnitude)
+                                               : static_cast<std::int32_t>(magnitude);
+  out.value = wrapSample(prediction + decoded, b, false);
+  return out;
 }
 
 // Codes one value with its point's prediction and contexts (the encoder's step).
