@@ -5,6 +5,7 @@
 #include <cmath>
 #include <span>
 #include <stdexcept>
+#include <tuple>
 #include <unordered_map>
 
 #include "conformance/bench/baselines.h"
@@ -118,44 +119,50 @@ CoderFigure lead1(const ref::LebStream& s, const ChannelPages& c, int runs) {
   return {"LEB lead-1 (the paper's; pages of 2^12)", bytes, measure([&] { decodeAll(false); }, runs)};
 }
 
-// The context coder's stream (reference/leb/FORMAT.md, "Context pages" and "Context gradient
-// pages") of the samples and the stored `gradients` (3 int8 a sample): the data's figure (the
-// header, its descriptor and pages; the decode of the stream of the samples alone, which holds the
-// same bytes) and the gradients' (their descriptor and pages; their decode: the whole stream's
-// decode minus the samples', medians of the same run, one measured after the other). One thread;
-// every stream checked bit for bit in the run.
-struct ContextFigures {
-  CoderFigure data, gradients;
-};
-ContextFigures contextCoder(const LebDataset& d, const std::vector<std::int8_t>& gradients, int pageBits, int threads,
-                            int runs) {
+// The context coder's streams (reference/leb/FORMAT.md, "Context pages" and "Context gradient
+// pages"), one thread, every stream checked bit for bit in the run.
+ref::LebEncodeOptions contextOptions(int pageBits, int threads, bool gradients) {
   ref::LebEncodeOptions o;
   o.pageBits = pageBits;
   o.coder = ref::LebCoder::Context;
-  o.gradients = false;
+  o.gradients = gradients;
   o.threads = threads;
-  const ref::LebStream alone = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, o));
+  return o;
+}
+std::string contextPages(int pageBits) { return "pages of 2^" + std::to_string(pageBits); }
+
+// The stream of the samples alone: its bytes (the header, the data's descriptor and pages: those
+// of a stream with gradients too) and its whole decode.
+CoderFigure contextSamples(const LebDataset& d, int pageBits, int threads, int runs) {
+  const ref::LebStream alone =
+      ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, contextOptions(pageBits, threads, false)));
   if (ref::decodeLeb(alone, 1).data.data() != d.volume.data())
     throw std::runtime_error("leb.coder: a context stream did not decode to its samples");
-  o.gradients = true;
+  return {"context (voxref's: samples from their corners' values; " + contextPages(pageBits) +
+              ", the whole volume decoded)",
+          static_cast<double>(alone.bytes.size()), measure([&] { (void)ref::decodeLeb(alone, 1); }, runs)};
+}
+
+// The gradients' figure of the stream of the samples and the stored `gradients` (3 int8 a
+// sample): their descriptor and pages, and their decode, the whole stream's less `samples`
+// (contextSamples' decode at the same page size, measured before it in the same run).
+CoderFigure contextGradients(const LebDataset& d, const std::vector<std::int8_t>& gradients, int pageBits, int threads,
+                             int runs, const Timing& samples) {
   const ref::LebStream both = ref::parseLebStream(
-      ref::encodeLeb(ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), gradients.data()}, o));
+      ref::encodeLeb(ref::LebVolumeIn{d.volume.dims(), d.bits, nullptr, d.volume.data().data(), gradients.data()},
+                     contextOptions(pageBits, threads, true)));
   const ref::LebDecoded back = ref::decodeLeb(both, 1);
   if (back.data.data() != d.volume.data() || back.gradients != gradients)
     throw std::runtime_error("leb.coder: a context stream did not decode to its samples and gradients");
-  const Timing samples = measure([&] { (void)ref::decodeLeb(alone, 1); }, runs);
   const Timing whole = measure([&] { (void)ref::decodeLeb(both, 1); }, runs);
   Timing rest = whole;
   rest.median = std::max(whole.median - samples.median, 1e-9);
   rest.min = std::max(whole.min - samples.max, 1e-9);
   rest.max = std::max(whole.max - samples.min, 1e-9);
   const ref::LebChannel& g = both.channels[1];
-  const std::string pages = "pages of 2^" + std::to_string(pageBits);
-  return {{"context (voxref's: samples from their corners' values; " + pages + ", the whole volume decoded)",
-           static_cast<double>(alone.bytes.size()), samples},
-          {"context (voxref's: vectors from their corners', gz from the unit sphere; " + pages +
-               ", the whole volume decoded: the stream's decode less the samples')",
-           static_cast<double>(g.descriptorBytes + g.pageOffset.back()), rest}};
+  return {"context (voxref's: vectors from their corners', gz from the unit sphere; " + contextPages(pageBits) +
+              ", the whole volume decoded: the stream's decode less the samples')",
+          static_cast<double>(g.descriptorBytes + g.pageOffset.back()), rest};
 }
 
 CoderFigure baseline(const BaselineResult& b) {
@@ -211,8 +218,8 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
   options.threads = o.threads;
   const ref::LebStream s = ref::parseLebStream(ref::encodeLeb(d.volume, d.bits, options));
   const std::vector<std::int8_t> gradients = ref::quantizedGradients(d.volume);
-  const std::array<ContextFigures, 2> context{contextCoder(d, gradients, 16, o.threads, runs),
-                                              contextCoder(d, gradients, 18, o.threads, runs)};
+  const std::array<CoderFigure, 2> samples{contextSamples(d, 16, o.threads, runs),
+                                           contextSamples(d, 18, o.threads, runs)};
   std::vector<ChannelFigures> figures;
   for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
     const bool data = kind == ref::LebChannelKind::Data;
@@ -229,8 +236,9 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
       f.tripleEntropy = tripleEntropyBytes(raw);
       f.derive = measure([&] { (void)ref::quantizedGradients(d.volume); }, runs);
     }
-    f.coders[kContext16] = data ? context[0].data : context[0].gradients;
-    f.coders[kContext18] = data ? context[1].data : context[1].gradients;
+    for (const auto& [row, pageBits, at] : {std::tuple{kContext16, 16, 0}, std::tuple{kContext18, 18, 1}})
+      f.coders[row] =
+          data ? samples[at] : contextGradients(d, gradients, pageBits, o.threads, runs, samples[at].decode);
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
     figures.push_back(std::move(f));
@@ -247,14 +255,15 @@ struct DiffusedFigures {
   double rawBytes = 0.0;
   CoderFigure zstd, xz, context;
 };
-std::vector<DiffusedFigures> measureDiffused(const BenchOptions& o, const LebDataset& d) {
+// `samples`: the context coder's decode of the samples alone, pages of 2^16 (contextSamples).
+std::vector<DiffusedFigures> measureDiffused(const BenchOptions& o, const LebDataset& d, const Timing& samples) {
   const int runs = o.quick ? 1 : 3;
   std::vector<DiffusedFigures> out;
   for (const int steps : kPaperDiffusionSteps) {
     const std::vector<std::int8_t> g = ref::diffusedQuantizedGradients(d.volume, steps);
     const std::string raw(reinterpret_cast<const char*>(g.data()), g.size());
     out.push_back({steps, static_cast<double>(raw.size()), baseline(zstdBaseline(raw, 19)),
-                   baseline(xzBaseline(raw, 9)), contextCoder(d, g, 16, o.threads, runs).gradients});
+                   baseline(xzBaseline(raw, 9)), contextGradients(d, g, 16, o.threads, runs, samples)});
   }
   return out;
 }
@@ -283,7 +292,8 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       t.rows.push_back({d.name, "", "not run: " + d.missing, "", "", ""});
       continue;
     }
-    for (const ChannelFigures& f : measureDataset(o, d)) {
+    const std::vector<ChannelFigures> figures = measureDataset(o, d);
+    for (const ChannelFigures& f : figures) {
       const bool data = f.kind == ref::LebChannelKind::Data;
       const std::string channel = data ? "data" : "gradients";
       const CoderFigure& goal = f.coders[data ? kXz : kZstd];  // the channel's goal coder (goalCoderName)
@@ -323,7 +333,7 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       }
       t.data["rows"].push_back(row);
     }
-    for (const DiffusedFigures& f : measureDiffused(o, d)) {
+    for (const DiffusedFigures& f : measureDiffused(o, d, figures[0].coders[kContext16].decode)) {
       const std::string channel =
           "gradients diffused " + std::to_string(f.steps) + " steps (the paper's Table 1 conditions; not derivable)";
       nlohmann::json row = {{"volume", d.name},

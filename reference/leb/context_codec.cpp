@@ -26,6 +26,11 @@ std::array<std::int8_t, 3> gradientAt(const std::int8_t* gradients, const GridPo
 
 }  // namespace
 
+LebProgress lebProgressPart(const LebProgress& whole, double base, double span) {
+  if (!whole) return {};
+  return [whole, base, span](double done) { whole(base + span * done); };
+}
+
 std::vector<std::uint32_t> contextStoredPages(const HzOrder& order, const Dims3& dims, int pageBits) {
   std::vector<std::uint32_t> pages;
   order.forEachInside(dims, 0, order.size(), [&](std::uint64_t h, const GridPoint&, int, int, unsigned) {
@@ -126,12 +131,8 @@ void decodeContextChannels(const LebStream& s, const HzOrder& order, const LebVo
   const int pb = s.pageBits;
   // The work of a channel is in proportion to its components (1 and 3).
   const double total = s.channels.size() > 1 ? 4.0 : 1.0;
-  const auto share = [&](double from, double width) -> LebProgress {
-    if (!progress) return {};
-    return [&progress, from, width, total](double done) { progress((from + width * done) / total); };
-  };
   const LebChannel& data = s.channels.at(0);
-  decodeContextChannel(s, order, data, threads, share(0.0, 1.0), [&](std::size_t j) {
+  decodeContextChannel(s, order, data, threads, lebProgressPart(progress, 0.0, 1.0 / total), [&](std::size_t j) {
     const StoredPage page = storedPage(s, data, data.storedPage[j]);
     ContextPageReader reader(page.bytes, data.valueBits, pb, data.storedPage[j], page.offset, page.name);
     withLebSamples(out, [&](auto* samples) {
@@ -145,18 +146,19 @@ void decodeContextChannels(const LebStream& s, const HzOrder& order, const LebVo
   });
   if (s.channels.size() < 2) return;
   const LebChannel& gradients = s.channels[1];
-  decodeContextChannel(s, order, gradients, threads, share(1.0, 3.0), [&](std::size_t j) {
-    const StoredPage page = storedPage(s, gradients, gradients.storedPage[j]);
-    ContextGradientPageReader reader(page.bytes, pb, gradients.storedPage[j], page.offset, page.name);
-    reader.decode(
-        order, s.dims, [&](const GridPoint& q) { return gradientAt(out.gradients, q, s.dims); },
-        [&](std::uint64_t, const GridPoint& p, const std::array<std::int8_t, 3>& g) {
-          std::int8_t* to = out.gradients + 3 * volumeIndex(p, s.dims);
-          to[0] = g[0];
-          to[1] = g[1];
-          to[2] = g[2];
-        });
-  });
+  decodeContextChannel(
+      s, order, gradients, threads, lebProgressPart(progress, 1.0 / total, 3.0 / total), [&](std::size_t j) {
+        const StoredPage page = storedPage(s, gradients, gradients.storedPage[j]);
+        ContextGradientPageReader reader(page.bytes, pb, gradients.storedPage[j], page.offset, page.name);
+        reader.decode(
+            order, s.dims, [&](const GridPoint& q) { return gradientAt(out.gradients, q, s.dims); },
+            [&](std::uint64_t, const GridPoint& p, const std::array<std::int8_t, 3>& g) {
+              std::int8_t* to = out.gradients + 3 * volumeIndex(p, s.dims);
+              to[0] = g[0];
+              to[1] = g[1];
+              to[2] = g[2];
+            });
+      });
 }
 
 }  // namespace voxref::ref

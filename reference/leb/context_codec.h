@@ -25,6 +25,9 @@ namespace voxref::ref {
 // Told how far the work has come (0..1, rising), between batches, with no worker running (the
 // caller's LebWindow, scaled to this part of its work).
 using LebProgress = std::function<void(double done)>;
+// `whole` told of one part of its work, the part [base, base + span) of it: done (0..1) of the part
+// is base + span x done of the whole. Empty when `whole` is.
+LebProgress lebProgressPart(const LebProgress& whole, double base, double span);
 
 // The stored pages of a volume: those holding one of its points, ascending (one walk of its
 // points: forEachInside skips the padding whole, so a 1025x1x1 volume costs its 1025 points).

@@ -524,15 +524,11 @@ std::uint64_t encodeLebTo(const LebVolumeIn& v, const LebEncodeOptions& o, const
     const bool gradients = lebStoresGradients(o);
     // The work of a channel is in proportion to its components (1 and 3).
     const double total = gradients ? 4.0 : 1.0;
-    const auto share = [&](double from, double width) -> LebProgress {
-      if (!o.window) return {};
-      return [&o, from, width, total](double done) { o.window((from + width * done) / total); };
-    };
     std::uint64_t end = encodeContextChannel(order, v, LebChannelKind::Data, stored, o.pageBits, o.threads,
-                                             share(0.0, 1.0), write, kLebHeaderBytes);
+                                             lebProgressPart(o.window, 0.0, 1.0 / total), write, kLebHeaderBytes);
     if (gradients)
-      end = encodeContextChannel(order, v, LebChannelKind::Gradients, stored, o.pageBits, o.threads, share(1.0, 3.0),
-                                 write, end);
+      end = encodeContextChannel(order, v, LebChannelKind::Gradients, stored, o.pageBits, o.threads,
+                                 lebProgressPart(o.window, 1.0 / total, 3.0 / total), write, end);
     write(0,
           lebHeaderBytes(v.dims, v.sampleBits, grid, o.pageBits, gradients ? 2 : 1, end, o.coder, o.deriveGradients));
     return end;
@@ -805,9 +801,7 @@ void decodeLebInto(const LebStream& s, const LebVolumeOut& out, int threads, con
   const HzOrder order(s.grid);
   if (s.coder == LebCoder::Context) {  // the data channel and any gradients channel; then any derived gradients
     const double share = derive ? 0.5 : 1.0;
-    LebProgress progress;
-    if (window) progress = [&](double done) { window(share * done); };
-    decodeContextChannels(s, order, out, threads, progress);
+    decodeContextChannels(s, order, out, threads, lebProgressPart(window, 0.0, share));
     if (derive) deriveGradients(out, threads, window, {share, 1.0 - share});
     return;
   }

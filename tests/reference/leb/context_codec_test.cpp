@@ -75,6 +75,27 @@ TEST(ContextCodec, EveryVolumeRoundTripsWithTheSameBytesForAnyThreadCount) {
   }
 }
 
+// Random access at every point of the grid, the last first (pages then decode their corners'
+// pages from inside the recursion): r gives the sample and the gradient that p, a reader of the
+// paper's lead-1 stream of the same volume and gradients, gives by another path (deltas and split
+// edges); inside the volume, its own sample and its vector of `gradients`.
+void expectEveryGridPoint(LebReader& r, LebReader& p, const ContextCase& c, const std::vector<std::int8_t>& gradients) {
+  const int n = lebGridCovering(c.volume.dims()).pointsPerAxis();
+  for (int z = n - 1; z >= 0; --z)
+    for (int y = n - 1; y >= 0; --y)
+      for (int x = n - 1; x >= 0; --x) {
+        const GridPoint q{x, y, z};
+        ASSERT_EQ(r.sample(q), p.sample(q)) << c.name << " at " << x << "," << y << "," << z;
+        ASSERT_EQ(r.gradient(q), p.gradient(q)) << c.name << " at " << x << "," << y << "," << z;
+        if (insideVolume(q, c.volume.dims())) {
+          ASSERT_EQ(r.sample(q), c.volume.at(x, y, z)) << c.name;
+          const std::size_t i = 3 * volumeIndex(q, c.volume.dims());
+          ASSERT_EQ((std::array<std::int8_t, 3>{gradients[i], gradients[i + 1], gradients[i + 2]}), r.gradient(q))
+              << c.name;
+        }
+      }
+}
+
 // Random access gives every point of the grid: a sample of the volume its own, a point of the
 // padding its split edge's prediction, which the paper's lead-1 stream of the same volume gives by
 // another path (deltas and split edges); and the gradients derived from the samples. With a
@@ -92,19 +113,7 @@ TEST(ContextCodec, RandomAccessGivesEveryPointAsTheLead1StreamDoes) {
     for (std::size_t budget : {std::size_t{0}, std::size_t{1} << 20}) {
       if (budget == 0 && sampleCount(c.volume.dims()) > 512) continue;
       LebReader r(context, budget), p(paper, 1 << 20);
-      const int n = context->grid.pointsPerAxis();
-      for (int z = n - 1; z >= 0; --z)
-        for (int y = n - 1; y >= 0; --y)
-          for (int x = n - 1; x >= 0; --x) {
-            const GridPoint q{x, y, z};
-            ASSERT_EQ(r.sample(q), p.sample(q)) << c.name << " at " << x << "," << y << "," << z;
-            if (insideVolume(q, c.volume.dims())) {
-              ASSERT_EQ(r.sample(q), c.volume.at(x, y, z)) << c.name;
-              const std::size_t i = 3 * volumeIndex(q, c.volume.dims());
-              const auto g = r.gradient(q);
-              ASSERT_EQ((std::array<std::int8_t, 3>{gradients[i], gradients[i + 1], gradients[i + 2]}), g) << c.name;
-            }
-          }
+      ASSERT_NO_FATAL_FAILURE(expectEveryGridPoint(r, p, c, gradients));
     }
   }
 }
@@ -176,18 +185,7 @@ TEST(ContextCodec, StoredGradientsRoundTripThroughBothDecoders) {
       lead1.pageBits = c.pageBits;
       auto paper = std::make_shared<const LebStream>(parseLebStream(encode(lead1)));
       LebReader r(s, std::size_t{1} << 20), p(paper, std::size_t{1} << 20);
-      const int n = s->grid.pointsPerAxis();
-      for (int z = n - 1; z >= 0; --z)
-        for (int y = n - 1; y >= 0; --y)
-          for (int x = n - 1; x >= 0; --x) {
-            const GridPoint q{x, y, z};
-            ASSERT_EQ(r.gradient(q), p.gradient(q)) << c.name << " at " << x << "," << y << "," << z;
-            if (insideVolume(q, c.volume.dims())) {
-              const std::size_t i = 3 * volumeIndex(q, c.volume.dims());
-              ASSERT_EQ((std::array<std::int8_t, 3>{gradients[i], gradients[i + 1], gradients[i + 2]}), r.gradient(q))
-                  << c.name;
-            }
-          }
+      ASSERT_NO_FATAL_FAILURE(expectEveryGridPoint(r, p, c, gradients));
     }
   }
 }
