@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <tuple>
@@ -14,6 +15,7 @@
 #include "reference/leb/gradients.h"
 #include "reference/leb/leb_codec.h"
 #include "reference/leb/leb_page.h"
+#include "reference/leb/mirror_stream.h"
 
 namespace voxref::conf {
 namespace {
@@ -165,6 +167,22 @@ CoderFigure contextGradients(const LebDataset& d, const std::vector<std::int8_t>
           static_cast<double>(g.descriptorBytes + g.pageOffset.back()), rest};
 }
 
+// The context coder's stream of the samples folded across the volume's mirror planes
+// (reference/leb/FORMAT.md, "Mirrored streams"; findLebMirrorPlanes), pages of 2^pageBits: the
+// whole stream's bytes and its whole decode, checked in the run. Empty when the volume has no plane.
+std::optional<CoderFigure> contextMirrored(const LebDataset& d, const ref::LebMirrorPlanes& planes, int pageBits,
+                                           int threads, int runs) {
+  if (!planes.any()) return std::nullopt;
+  const ref::MirroredLebStream m = ref::parseMirroredLebStream(
+      ref::encodeMirroredLeb(d.volume, d.bits, planes, contextOptions(pageBits, threads, false)));
+  if (ref::decodeMirroredLeb(m, 1).data.data() != d.volume.data())
+    throw std::runtime_error("leb.coder: a mirrored stream did not decode to its samples");
+  return CoderFigure{"context, mirrored (" + ref::lebMirrorPlanesText(planes) + "; " +
+                         std::to_string(m.exceptions.size()) + " points off their image; " + contextPages(pageBits) +
+                         ", the whole volume decoded and unfolded)",
+                     static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
+}
+
 CoderFigure baseline(const BaselineResult& b) {
   return {b.codec + " (whole channel, no random access)", static_cast<double>(b.bytes), b.decompress};
 }
@@ -210,6 +228,7 @@ struct ChannelFigures {
   double tripleEntropy = 0.0;                  // gradients only
   Timing derive;                               // gradients only: quantizedGradients of the samples, one thread
   double repeatedRows = 0.0;                   // repeatedRowShare of the channel's x-rows
+  std::vector<CoderFigure> mirrored;           // data only: contextMirrored at 2^16 and 2^18, if a plane
 };
 
 std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDataset& d) {
@@ -224,7 +243,7 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
   for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
     const bool data = kind == ref::LebChannelKind::Data;
     const std::string raw = data ? dataBytes(d.volume, d.bits) : gradientBytes(d.volume);
-    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, 0.0, {}};
+    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, {}, 0.0, {}};
     const ChannelPages p12 = channelPages(d, kind, 12);
     f.coders[kLead1] = lead1(s, p12, runs);
     f.coders[kAdaptive12] = adaptive(p12, 12, runs);
@@ -239,6 +258,12 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
     for (const auto& [row, pageBits, at] : {std::tuple{kContext16, 16, 0}, std::tuple{kContext18, 18, 1}})
       f.coders[row] =
           data ? samples[at] : contextGradients(d, gradients, pageBits, o.threads, runs, samples[at].decode);
+    if (data) {
+      const ref::LebMirrorPlanes planes = ref::findLebMirrorPlanes(d.volume.data().data(), d.volume.dims());
+      for (const int pageBits : {16, 18})
+        if (std::optional<CoderFigure> m = contextMirrored(d, planes, pageBits, o.threads, runs))
+          f.mirrored.push_back(std::move(*m));
+    }
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
     figures.push_back(std::move(f));
@@ -315,6 +340,23 @@ BenchTable lebCoderBench(const BenchOptions& o) {
         row["coders"].push_back(
             {{"coder", c.coder}, {"bytes", c.bytes}, {"ratio", f.rawBytes / c.bytes}, {"decode", toJson(c.decode)}});
       }
+      if (data && f.mirrored.empty())
+        t.rows.push_back({d.name, channel,
+                          "context, mirrored: no mirror plane found (the volume is not its own mirror image on any "
+                          "axis), so no folded stream",
+                          "-", "-", ""});
+      for (const CoderFigure& c : f.mirrored) {
+        const double against = goal.bytes / c.bytes;
+        t.rows.push_back({d.name, channel, c.coder, ratioText(f.rawBytes / c.bytes),
+                          formatNumber("%.1f", f.rawBytes / 1e6 / c.decode.median),
+                          formatNumber("%.2f", against) + " of " + goalCoderName(data) +
+                              "'s ratio: " + (against > 1.0 ? "beats it" : "below it")});
+        row["coders"].push_back({{"coder", c.coder},
+                                 {"bytes", c.bytes},
+                                 {"ratio", f.rawBytes / c.bytes},
+                                 {"decode", toJson(c.decode)},
+                                 {"mirrored", true}});
+      }
       t.rows.push_back({d.name, channel,
                         "anchor: share of the x-rows (not one value repeated) that repeat an earlier row exactly",
                         formatNumber("%.1f %%", 100.0 * f.repeatedRows), "-", ""});
@@ -383,7 +425,12 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "a page coded on its own cannot refer to rows in other pages. Where it is high (the data of the "
       "mirror-symmetric hydrogen atom and nucleon), the general-purpose coders' lead comes from these repeats; a "
       "mirror flips the sign of a gradient component, so gradient rows rarely repeat exactly, and the anchor does not "
-      "account for zstd's lead on the hydrogen atom's gradients (long partial matches).";
+      "account for zstd's lead on the hydrogen atom's gradients (long partial matches). The rows 'context, mirrored' "
+      "store such a volume folded (reference/leb/FORMAT.md, 'Mirrored streams'): the planes findLebMirrorPlanes "
+      "finds, one side of each as a context stream, the other side as its images, and the points off their image as "
+      "exceptions; the ratio counts the whole stream (its header, the exceptions and the folded stream), the decode "
+      "figure the whole volume decoded and unfolded. Its gradients are derived from the samples or none (a mirror "
+      "flips a gradient's component), so it has no gradients row.";
   return t;
 }
 

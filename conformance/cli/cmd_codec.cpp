@@ -62,6 +62,12 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
   encodeCmd->add_flag("--derive-gradients", encode->deriveGradients,
                       "leb: store no gradients channel; the decoder derives the gradients from the samples (the same "
                       "bytes: reference/leb/FORMAT.md, header byte 23)");
+  encodeCmd
+      ->add_option("--mirror", encode->mirror,
+                   "leb: off, or auto: find the planes the volume is its own mirror image across and store one side "
+                   "of each (a mirrored stream, reference/leb/FORMAT.md \"Mirrored streams\"; needs "
+                   "--derive-gradients or --no-gradients)")
+      ->default_val("off");
   encodeCmd->add_option("--bounds-out", encode->boundsOut,
                         "leb: also write the per-diamond min, max and error for isosurfaces (.vxlbb)");
   encodeCmd->add_option("--out", encode->out, "output file (.vxtv, .vxleb)")->required();

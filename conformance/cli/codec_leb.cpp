@@ -10,6 +10,7 @@
 #include <iostream>
 #include <new>
 #include <optional>
+#include <variant>
 
 #include "conformance/cli/codecs.h"
 #include "conformance/framework/exit_status.h"
@@ -24,6 +25,7 @@
 #include "reference/iso/grid_field.h"
 #include "reference/leb/leb_codec.h"
 #include "reference/leb/leb_padding.h"
+#include "reference/leb/mirror_stream.h"
 
 namespace voxref::cli {
 namespace {
@@ -84,6 +86,33 @@ void printInfo(const ref::LebStream& s, std::ostream& out) {
       << " (raw bytes of the volume" << (st.channels.size() > 1 ? " and its gradients" : "") << " over the stream)\n";
 }
 
+void printInfo(const ref::MirroredLebStream& m, std::ostream& out) {
+  const ref::LebMirrorHeader& h = m.header;
+  const std::uint64_t points = ref::sampleCount(h.dims), kept = ref::sampleCount(m.inner.dims);
+  out << "mirrored        the volume is stored folded across its mirror planes (reference/leb/FORMAT.md, "
+         "\"Mirrored streams\")\n"
+      << "volume          " << dimsText(h.dims) << " uint" << h.sampleBits << "\n"
+      << "mirror planes   " << ref::lebMirrorPlanesText(h.planes) << "\n"
+      << "folded volume   " << dimsText(m.inner.dims) << ": " << kept << " of the " << points
+      << " points stored, the other " << (points - kept) << " are their images\n"
+      << "exceptions      " << m.exceptions.size() << " mirrored points differ from their image: " << m.exceptionBytes
+      << " bytes\n"
+      << "gradients       "
+      << (h.derivedGradients ? "derived from the unfolded samples when decoded (central differences): none stored"
+                             : "none")
+      << "\n"
+      << "stream          " << m.streamBytes << " bytes, ratio "
+      << ratioText(static_cast<double>(points * static_cast<std::uint64_t>(h.sampleBits / 8)) /
+                   static_cast<double>(m.streamBytes))
+      << " (raw bytes of the volume over the stream)\n"
+      << "the folded volume's stream, from byte " << m.innerOffset << ":\n";
+  printInfo(m.inner, out);
+}
+
+void printAnyInfo(const std::variant<io::LebFile, io::MirroredLebFile>& file, std::ostream& out) {
+  std::visit([&](const auto& f) { printInfo(f.stream, out); }, file);
+}
+
 }  // namespace
 
 int encodeLebCommand(const EncodeOptions& o) {
@@ -111,6 +140,14 @@ int encodeLebCommand(const EncodeOptions& o) {
     options.coder = ref::LebCoder::Context;
   else
     throw conf::UsageError("--coder must be lead1, adaptive or context, got " + o.lebCoder);
+  if (o.mirror != "off" && o.mirror != "auto") throw conf::UsageError("--mirror must be off or auto, got " + o.mirror);
+  const bool mirror = o.mirror == "auto";
+  if (mirror && ref::lebStoresGradients(options))
+    throw conf::UsageError(
+        "--mirror auto stores no gradients (a gradient's component across a mirror plane changes sign): give "
+        "--derive-gradients or --no-gradients");
+  if (mirror && !o.boundsOut.empty())
+    throw conf::UsageError("--mirror auto and --bounds-out: the diamond bounds are written for unfolded streams only");
   // What the encoder will allocate is known from the extents (the samples, and the padding that
   // predictions reach: leb_padding.h). Refused before the volume is read when the process may not
   // allocate it.
@@ -124,6 +161,8 @@ int encodeLebCommand(const EncodeOptions& o) {
     // files are written together.
     need = bounds ? ref::lebEncodeMemoryBytes(dims, options) + 2 * ref::sampleCount(dims)  // + the volume at 16 bits
                   : io::lebFileEncodeAddressBytes(dims, *type, options);
+    if (mirror)
+      need += ref::sampleCount(dims) * (*type == io::VoxelType::UInt8 ? 1 : 2);  // the folded volume, at most this
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
   }
@@ -143,9 +182,19 @@ int encodeLebCommand(const EncodeOptions& o) {
   const auto t0 = conf::Clock::now();
   if (!bounds) {
     try {
+      ref::LebMirrorPlanes planes;
+      if (mirror) {
+        planes = io::findLebMirrorPlanesInFile(o.inputs[0], dims, *type);
+        std::cout << "mirror planes   "
+                  << (planes.any() ? ref::lebMirrorPlanesText(planes)
+                                   : "none found (no axis on which the volume is its own mirror image in all but one "
+                                     "of 1024 points): the stream is not folded")
+                  << "\n";
+      }
       conf::Progress progress("voxref encode --codec leb", 1000);
-      io::encodeLebFile(o.inputs[0], dims, *type, o.out, options, io::kLebWindowBytes,
-                        [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); });
+      io::encodeLebFile(
+          o.inputs[0], dims, *type, o.out, options, io::kLebWindowBytes,
+          [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); }, planes);
       progress.finish();
     } catch (const std::invalid_argument& e) {
       throw conf::UsageError(e.what());
@@ -153,7 +202,7 @@ int encodeLebCommand(const EncodeOptions& o) {
       throw io::IoError(needText + ": out of memory");
     }
     std::cout << "wrote " << o.out.string() << " in " << conf::secondsSince(t0) << " s\n";
-    printInfo(io::readLebFile(o.out), std::cout);
+    printAnyInfo(io::openAnyLebFile(o.out), std::cout);
     return 0;
   }
   ref::Volume<std::uint16_t> volume = *type == io::VoxelType::UInt8
@@ -178,31 +227,63 @@ int encodeLebCommand(const EncodeOptions& o) {
   return 0;
 }
 
+namespace {
+
+// What voxref decode says of a stream before it maps anything: its volume, and what the decode needs.
+struct DecodePlan {
+  ref::Dims3 dims;
+  int sampleBits;
+  bool hasGradients;
+  std::uint64_t need;
+  std::string needText;
+};
+
+DecodePlan decodePlan(const std::filesystem::path& input, const ref::LebStream& s) {
+  const std::uint64_t need = io::lebFileDecodeAddressBytes(s);
+  return {s.dims, s.sampleBits, s.hasGradients(), need,
+          input.string() + ": decoding needs " + std::to_string(need) + " bytes (" + dimsText(s.dims) +
+              " samples and their gradients mapped to files, the stream, and the " +
+              std::to_string(ref::LebPadding::shellPoints(s.grid, s.dims)) + " padding points of the " +
+              std::to_string(s.grid.pointsPerAxis()) + "^3 grid of k = " + std::to_string(s.grid.k) +
+              " that predictions reach)"};
+}
+
+DecodePlan decodePlan(const std::filesystem::path& input, const ref::MirroredLebStream& s) {
+  const std::uint64_t need = io::lebFileDecodeAddressBytes(s);
+  return {s.header.dims, s.header.sampleBits, s.header.derivedGradients, need,
+          input.string() + ": decoding needs " + std::to_string(need) + " bytes (" + dimsText(s.header.dims) +
+              " samples" + (s.header.derivedGradients ? " and their gradients" : "") +
+              " mapped to files, the stream, its " + std::to_string(s.exceptions.size()) +
+              " exceptions, and the padding points of the folded " + dimsText(s.inner.dims) +
+              " volume's grid that predictions reach)"};
+}
+
+}  // namespace
+
 int decodeLebCommand(const DecodeOptions& o) {
   if (o.step) throw conf::UsageError("--step is for the timevarying codec");
-  const io::LebFile file = io::openLebFile(o.input);
-  const ref::LebStream& s = file.stream;
-  if (!o.gradientsOut.empty() && !s.hasGradients())
+  const std::variant<io::LebFile, io::MirroredLebFile> file = io::openAnyLebFile(o.input);
+  const DecodePlan plan = std::visit([&](const auto& f) { return decodePlan(o.input, f.stream); }, file);
+  if (!o.gradientsOut.empty() && !plan.hasGradients)
     throw conf::UsageError(o.input.string() + " has no gradients (encoded with --no-gradients)");
   // What decoding will map and allocate is known from the header (the stream, the samples and
   // their gradients, the padding that predictions reach): refused here, before any of it is
   // mapped, when it exceeds what this process may still map.
-  const std::uint64_t need = io::lebFileDecodeAddressBytes(s);
-  const std::string needText = o.input.string() + ": decoding needs " + std::to_string(need) + " bytes (" +
-                               dimsText(s.dims) + " samples and their gradients mapped to files, the stream, and the " +
-                               std::to_string(ref::LebPadding::shellPoints(s.grid, s.dims)) +
-                               " padding points of the " + std::to_string(s.grid.pointsPerAxis()) +
-                               "^3 grid of k = " + std::to_string(s.grid.k) + " that predictions reach)";
-  refuseBeyondAddressSpace(need, needText);
+  refuseBeyondAddressSpace(plan.need, plan.needText);
   try {
     conf::Progress progress("voxref decode --codec leb", 1000);
-    io::decodeLebFile(file, o.out, o.gradientsOut, 0, io::kLebWindowBytes,
-                      [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); });
+    std::visit(
+        [&](const auto& f) {
+          io::decodeLebFile(f, o.out, o.gradientsOut, 0, io::kLebWindowBytes, [&](double done, std::string_view step) {
+            progress.update(std::lround(1000 * done), step);
+          });
+        },
+        file);
     progress.finish();
   } catch (const std::bad_alloc&) {
-    throw io::IoError(needText + ": out of memory");
+    throw io::IoError(plan.needText + ": out of memory");
   }
-  std::cout << "decoded " << dimsText(s.dims) << " uint" << s.sampleBits << " samples (x fastest) into "
+  std::cout << "decoded " << dimsText(plan.dims) << " uint" << plan.sampleBits << " samples (x fastest) into "
             << o.out.string();
   if (!o.gradientsOut.empty()) std::cout << " and their gradients (3 int8 per sample) into " << o.gradientsOut.string();
   std::cout << "\n";
@@ -210,7 +291,7 @@ int decodeLebCommand(const DecodeOptions& o) {
 }
 
 int infoLebCommand(const InfoOptions& o) {
-  printInfo(io::readLebFile(o.input), std::cout);
+  printAnyInfo(io::openAnyLebFile(o.input), std::cout);
   return 0;
 }
 

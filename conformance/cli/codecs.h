@@ -30,6 +30,7 @@ struct EncodeOptions {
   std::string lebCoder = "lead1";   // leb: the pages' entropy stage, lead1 (the paper's) or adaptive
   bool noGradients = false;         // leb: data channel only
   bool deriveGradients = false;     // leb: data channel only, the gradients derived when decoded
+  std::string mirror = "off";       // leb: off, or auto (fold the mirror planes found: a mirrored stream)
   std::filesystem::path boundsOut;  // leb: also write the per-diamond bounds (reference/iso/BOUNDS_FORMAT.md)
   std::filesystem::path out;
 };

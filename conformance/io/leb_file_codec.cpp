@@ -131,6 +131,17 @@ std::vector<MappedFile*> present(std::initializer_list<MappedFile*> files) {
   return v;
 }
 
+// Writes a stream through `encode` (handed the write of each part at its offset) into the temporary
+// file of `output`, then syncs it and renames it into place; returns the stream's size.
+template <class Encode>
+std::uint64_t writeStreamFile(AtomicOutput& output, const std::filesystem::path& out, Encode&& encode) {
+  PositionedFile file(output.temporary(), out);
+  const std::uint64_t size = encode([&](std::uint64_t offset, std::string_view bytes) { file.write(offset, bytes); });
+  file.close();
+  output.commit();
+  return size;
+}
+
 }  // namespace
 
 std::uint64_t lebFileEncodeAddressBytes(const ref::Dims3& dims, VoxelType type, const ref::LebEncodeOptions& o) {
@@ -141,9 +152,36 @@ std::uint64_t lebFileEncodeAddressBytes(const ref::Dims3& dims, VoxelType type, 
 
 LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& dims, VoxelType type,
                          const std::filesystem::path& out, const ref::LebEncodeOptions& options, std::uint64_t budget,
-                         const LebProgress& progress) {
+                         const LebProgress& progress, const ref::LebMirrorPlanes& mirror) {
   InputSamples in = inputSamples(input, dims, type);
   AtomicOutput output(out);
+  const int bits = type == VoxelType::UInt8 ? 8 : 16;
+  LebFileRun run;
+  if (mirror.any()) {  // the folded volume into a scratch file, then its stream behind the mirror's header
+    ref::requireLebMirrorPlanes(dims, mirror);
+    const ref::Dims3 f = ref::lebFoldedDims(dims, mirror);
+    ScratchFile foldedFile(output, out, "folded");
+    MappedFile folded = MappedFile::create(foldedFile.path(), ref::sampleCount(f) * bytesPerSample(type), out);
+    ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, &folded}));
+    if (progress) progress(0, "folding");
+    const std::vector<ref::LebMirrorException> exceptions =
+        in.data8 ? ref::foldLebVolume(in.data8, dims, mirror, folded.data())
+                 : ref::foldLebVolume(in.data16, dims, mirror, bits, reinterpret_cast<std::uint16_t*>(folded.data()));
+    window();
+    ref::LebEncodeOptions o = options;
+    o.window = [&](double done) {
+      window();
+      if (progress) progress(done, "encoding the folded volume");
+    };
+    const ref::LebVolumeIn span{f, bits, in.data8 ? folded.data() : nullptr,
+                                in.data8 ? nullptr : reinterpret_cast<const std::uint16_t*>(folded.data()), nullptr};
+    run.streamBytes = writeStreamFile(output, out, [&](const ref::LebStreamWrite& write) {
+      return ref::encodeMirroredLebTo(span, {dims, bits, mirror, false}, exceptions, o, write);
+    });
+    run.trims = window.trims();
+    run.mirrorExceptions = exceptions.size();
+    return run;
+  }
   std::optional<ScratchFile> gradientsFile;
   std::optional<MappedFile> gradients;
   if (ref::lebStoresGradients(options)) {  // a stream that derives them needs none
@@ -166,16 +204,18 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
     window();
     if (progress) progress(done, "encoding");
   };
-  const ref::LebVolumeIn span{dims, type == VoxelType::UInt8 ? 8 : 16, in.data8, in.data16,
+  const ref::LebVolumeIn span{dims, bits, in.data8, in.data16,
                               gradients ? reinterpret_cast<const std::int8_t*>(gradients->data()) : nullptr};
-  PositionedFile file(output.temporary(), out);
-  LebFileRun run;
   run.streamBytes =
-      ref::encodeLebTo(span, o, [&](std::uint64_t offset, std::string_view bytes) { file.write(offset, bytes); });
-  file.close();
-  output.commit();
+      writeStreamFile(output, out, [&](const ref::LebStreamWrite& write) { return ref::encodeLebTo(span, o, write); });
   run.trims = window.trims();
   return run;
+}
+
+ref::LebMirrorPlanes findLebMirrorPlanesInFile(const std::filesystem::path& input, const ref::Dims3& dims,
+                                               VoxelType type) {
+  const InputSamples in = inputSamples(input, dims, type);
+  return in.data8 ? ref::findLebMirrorPlanes(in.data8, dims) : ref::findLebMirrorPlanes(in.data16, dims);
 }
 
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
@@ -184,26 +224,46 @@ std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
          (s.hasGradients() ? 3 * samples : 0) + ref::lebDecodeShellBytes(s);
 }
 
-LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
-                         const std::filesystem::path& gradientsOut, int threads, std::uint64_t budget,
-                         const LebProgress& progress) {
-  const ref::LebStream& s = input.stream;
-  if (!gradientsOut.empty() && !s.hasGradients())
-    throw std::invalid_argument(input.file->path().string() + " has no gradients (encoded with --no-gradients)");
+std::uint64_t lebFileDecodeAddressBytes(const ref::MirroredLebStream& s) {
+  const std::uint64_t samples = ref::sampleCount(s.header.dims);
+  return s.streamBytes + samples * static_cast<std::uint64_t>(s.header.sampleBits / 8) +
+         (s.header.derivedGradients ? 3 * samples : 0) + ref::lebDecodeShellBytes(s.inner) +
+         s.exceptions.size() * sizeof(ref::LebMirrorException);
+}
+
+namespace {
+
+// What a decode into files needs to know of its stream.
+struct DecodeTarget {
+  MappedFile& input;
+  ref::Dims3 dims;
+  int sampleBits = 8;
+  bool hasGradients = false;     // a decoder gives gradients (stored or derived)
+  bool storesGradients = false;  // a gradients channel, decoded (and so checked) whether wanted or not
+};
+
+// The outputs of a decode (the samples, the gradients when wanted or stored) mapped from temporary
+// files, `decode` run into them under the window, then both renamed into place.
+template <class Decode>
+LebFileRun decodeToFiles(const DecodeTarget& t, const std::filesystem::path& out,
+                         const std::filesystem::path& gradientsOut, std::uint64_t budget, const LebProgress& progress,
+                         Decode&& decode) {
+  if (!gradientsOut.empty() && !t.hasGradients)
+    throw std::invalid_argument(t.input.path().string() + " has no gradients (encoded with --no-gradients)");
   // A gradients channel is decoded whether wanted or not (into a scratch file when not); derived
   // gradients are computed only when wanted.
-  const bool hasGradients = s.channel(ref::LebChannelKind::Gradients) != nullptr || !gradientsOut.empty();
+  const bool gradientsMapped = t.storesGradients || !gradientsOut.empty();
   if (!gradientsOut.empty() && std::filesystem::weakly_canonical(out).lexically_normal() ==
                                    std::filesystem::weakly_canonical(gradientsOut).lexically_normal())
     throw IoError("cannot write " + gradientsOut.string() + " twice: two outputs name the same file");
-  const std::uint64_t samples = ref::sampleCount(s.dims);
+  const std::uint64_t samples = ref::sampleCount(t.dims);
   AtomicOutput dataOut(out);
   MappedFile data =
-      MappedFile::create(dataOut.temporary(), samples * static_cast<std::uint64_t>(s.sampleBits / 8), out);
+      MappedFile::create(dataOut.temporary(), samples * static_cast<std::uint64_t>(t.sampleBits / 8), out);
   std::optional<AtomicOutput> gradientsOutput;
   std::optional<ScratchFile> scratch;
   std::optional<MappedFile> gradients;
-  if (hasGradients) {
+  if (gradientsMapped) {
     std::filesystem::path at, named = gradientsOut;
     if (!gradientsOut.empty()) {
       gradientsOutput.emplace(gradientsOut);
@@ -215,23 +275,47 @@ LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
     }
     gradients = MappedFile::create(at, 3 * samples, named);
   }
-  ResidentWindow window(budget, present({input.file.get(), &data, gradients ? &*gradients : nullptr}));
-  const ref::LebVolumeOut span{s.dims, s.sampleBits, s.sampleBits == 8 ? data.data() : nullptr,
-                               s.sampleBits == 8 ? nullptr : reinterpret_cast<std::uint16_t*>(data.data()),
+  ResidentWindow window(budget, present({&t.input, &data, gradients ? &*gradients : nullptr}));
+  const ref::LebVolumeOut span{t.dims, t.sampleBits, t.sampleBits == 8 ? data.data() : nullptr,
+                               t.sampleBits == 8 ? nullptr : reinterpret_cast<std::uint16_t*>(data.data()),
                                gradients ? reinterpret_cast<std::int8_t*>(gradients->data()) : nullptr};
   try {
-    ref::decodeLebInto(s, span, threads, [&](double done) {
+    decode(span, [&](double done) {
       window();
       if (progress) progress(done, "decoding");
     });
   } catch (const ref::StreamError& e) {
-    throw FormatError(input.file->path().string() + ": " + e.what());
+    throw FormatError(t.input.path().string() + ": " + e.what());
   }
   data.flush();
   if (gradientsOutput) gradients->flush();
   dataOut.commit();
   if (gradientsOutput) gradientsOutput->commit();
-  return {s.bytes.size(), window.trims()};
+  return {t.input.size(), window.trims()};
+}
+
+}  // namespace
+
+LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
+                         const std::filesystem::path& gradientsOut, int threads, std::uint64_t budget,
+                         const LebProgress& progress) {
+  const ref::LebStream& s = input.stream;
+  return decodeToFiles(
+      {*input.file, s.dims, s.sampleBits, s.hasGradients(), s.channel(ref::LebChannelKind::Gradients) != nullptr}, out,
+      gradientsOut, budget, progress, [&](const ref::LebVolumeOut& span, const ref::LebWindow& window) {
+        ref::decodeLebInto(s, span, threads, window);
+      });
+}
+
+LebFileRun decodeLebFile(const MirroredLebFile& input, const std::filesystem::path& out,
+                         const std::filesystem::path& gradientsOut, int threads, std::uint64_t budget,
+                         const LebProgress& progress) {
+  const ref::MirroredLebStream& s = input.stream;
+  return decodeToFiles({*input.file, s.header.dims, s.header.sampleBits, s.header.derivedGradients, false}, out,
+                       gradientsOut, budget, progress,
+                       [&](const ref::LebVolumeOut& span, const ref::LebWindow& window) {
+                         ref::decodeMirroredLebInto(s, span, threads, window);
+                       });
 }
 
 }  // namespace voxref::io

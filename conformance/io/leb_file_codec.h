@@ -14,6 +14,7 @@
 #include "conformance/io/leb_file.h"
 #include "conformance/io/raw_volume.h"
 #include "reference/leb/leb_codec.h"
+#include "reference/leb/mirror_fold.h"
 
 namespace voxref::io {
 
@@ -25,8 +26,9 @@ inline constexpr std::uint64_t kLebWindowBytes = std::uint64_t{512} << 20;
 using LebProgress = std::function<void(double done, std::string_view step)>;
 
 struct LebFileRun {
-  std::uint64_t streamBytes = 0;  // of the stream written (encode) or read (decode)
-  int trims = 0;                  // how often the window trimmed the mappings
+  std::uint64_t streamBytes = 0;       // of the stream written (encode) or read (decode)
+  int trims = 0;                       // how often the window trimmed the mappings
+  std::uint64_t mirrorExceptions = 0;  // encode with mirror planes: the points that differ from their image
 };
 
 // Encodes the raw volume `input` (x fastest, uint8 or uint16 little endian; a ".gz" input is
@@ -34,9 +36,17 @@ struct LebFileRun {
 // The gradients (quantizedGradients, made slice by slice) go to a temporary file beside `out`,
 // removed afterwards. Throws IoError naming the file (missing, wrong size, disk full: "cannot
 // write <out>: <reason>", and nothing is left at `out`), std::invalid_argument as encodeLeb.
+// With `mirror` planes the stream is a mirrored one (reference/leb/mirror_stream.h): the folded
+// volume goes to a temporary file beside `out` (foldLebVolume, one pass), and is encoded from
+// there; std::invalid_argument then also as encodeMirroredLebTo and foldLebVolume (gradients to
+// store, too many exceptions).
 LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& dims, VoxelType type,
                          const std::filesystem::path& out, const ref::LebEncodeOptions& options,
-                         std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});
+                         std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {},
+                         const ref::LebMirrorPlanes& mirror = {});
+// The mirror planes of the raw volume `input` (ref::findLebMirrorPlanes over its mapped samples).
+ref::LebMirrorPlanes findLebMirrorPlanesInFile(const std::filesystem::path& input, const ref::Dims3& dims,
+                                               VoxelType type);
 // The address space encodeLebFile maps and allocates, from the extents (for a refusal under
 // ulimit -v before anything is read): the volume and its gradients mapped, and what the encoder
 // allocates (ref::lebEncodeToMemoryBytes).
@@ -51,8 +61,15 @@ std::uint64_t lebFileEncodeAddressBytes(const ref::Dims3& dims, VoxelType type, 
 LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
                          const std::filesystem::path& gradientsOut, int threads = 0,
                          std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});
+// The same for a mirrored stream: the folded volume is decoded into the start of the samples'
+// file and unfolded in place (ref::decodeMirroredLebInto); its gradients are derived or none.
+LebFileRun decodeLebFile(const MirroredLebFile& input, const std::filesystem::path& out,
+                         const std::filesystem::path& gradientsOut, int threads = 0,
+                         std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});
 // The address space decodeLebFile maps and allocates for `stream`: the stream, the volume and its
-// gradients mapped, and the shells of padding (one a channel).
+// gradients mapped, and the shells of padding (one a channel); for a mirrored stream, its
+// exceptions too.
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& stream);
+std::uint64_t lebFileDecodeAddressBytes(const ref::MirroredLebStream& stream);
 
 }  // namespace voxref::io

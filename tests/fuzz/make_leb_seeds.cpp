@@ -1,7 +1,7 @@
 // Writes a seed corpus of valid LEB streams for the fuzz target: small volumes of each kind the
 // decoder handles (8 and 16 bits, with and without gradients, padded and not, tiny pages), with
 // each coder (lead-1: version 2; adaptive: version 3; context: version 4, with and without a
-// gradients channel).
+// gradients channel); and mirrored streams around each coder's (reference/leb/mirror_stream.h).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +9,7 @@
 #include <random>
 
 #include "reference/leb/leb_codec.h"
+#include "reference/leb/mirror_stream.h"
 
 int main(int argc, char** argv) {
   using namespace voxref::ref;
@@ -51,5 +52,29 @@ int main(int argc, char** argv) {
   write("context_wide16.vxleb", wide, 16, 4, false, LebCoder::Context);
   write("context_smooth_gradients.vxleb", smooth, 8, 4, true, LebCoder::Context);  // "Context gradient pages"
   write("context_noise_gradients.vxleb", noise, 8, 6, true, LebCoder::Context);
+  // Mirrored: the smooth volume made its own mirror image in x (sum 8) and z (sum 3), with one
+  // point off its image; the wide one in y (sum 4).
+  auto writeMirrored = [&](const std::string& name, Volume<std::uint16_t> v, int bits, const LebMirrorPlanes& planes,
+                           LebCoder coder, bool derive, bool exception) {
+    const Dims3 d = v.dims();
+    for (int z = 0; z < d[2]; ++z)
+      for (int y = 0; y < d[1]; ++y)
+        for (int x = 0; x < d[0]; ++x)
+          v.at(x, y, z) = v.at(lebMirrorImage(x, planes.sum[0]), lebMirrorImage(y, planes.sum[1]),
+                               lebMirrorImage(z, planes.sum[2]));
+    if (exception) v.at(d[0] - 1, 0, 0) = static_cast<std::uint16_t>(v.at(d[0] - 1, 0, 0) ^ 1);
+    LebEncodeOptions o;
+    o.pageBits = 4;
+    o.coder = coder;
+    o.gradients = derive;
+    o.deriveGradients = derive;
+    std::ofstream(dir / name, std::ios::binary) << encodeMirroredLeb(v, bits, planes, o);
+  };
+  Volume<std::uint16_t> big({32, 7, 5});  // 2^8 mirrored points at least, so one exception fits
+  for (auto& s : big.data()) s = static_cast<std::uint16_t>(rng() & 255);
+  writeMirrored("mirrored_lead1.vxleb", smooth, 8, {{8, kNoLebMirror, 3}}, LebCoder::Lead1, false, false);
+  writeMirrored("mirrored_context_exception.vxleb", big, 8, {{31, kNoLebMirror, 3}}, LebCoder::Context, true, true);
+  writeMirrored("mirrored_adaptive_wide16.vxleb", wide, 16, {{kNoLebMirror, 4, kNoLebMirror}}, LebCoder::Adaptive, true,
+                false);
   return 0;
 }

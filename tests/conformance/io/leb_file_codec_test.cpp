@@ -7,6 +7,7 @@
 
 #include "conformance/io/atomic_file.h"
 #include "reference/leb/gradients.h"
+#include "reference/leb/mirror_stream.h"
 #include "tests/scratch_folder.h"
 
 namespace voxref::io {
@@ -76,6 +77,63 @@ TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
   }
   for (const auto& p : std::filesystem::directory_iterator(raw.parent_path()))
     EXPECT_EQ(p.path().filename().string().find(".tmp"), std::string::npos) << p.path() << " was left behind";
+}
+
+// A mirrored stream (reference/leb/mirror_stream.h) between files: the stream encodeMirroredLeb
+// makes in memory, under any window, decoded back in place with its derived gradients.
+TEST(LebFileCodecMirrored, EncodesTheStreamEncodeMirroredLebMakesAndDecodesItBack) {
+  struct Mirrored {
+    ref::Dims3 dims;
+    int bits;
+    ref::LebMirrorPlanes planes;
+    ref::Dims3 off;  // a mirrored point, moved off its image
+  };
+  for (const Mirrored& c : {Mirrored{{37, 21, 13}, 8, {{36, ref::kNoLebMirror, 11}}, {36, 20, 12}},
+                            Mirrored{{20, 9, 17}, 16, {{ref::kNoLebMirror, 7, ref::kNoLebMirror}}, {19, 7, 16}}}) {
+    const std::string name = ref::dimsText(c.dims) + "_" + std::to_string(c.bits);
+    SCOPED_TRACE(name);
+    const test::ScratchFolder dir;
+    const auto raw = dir / (name + ".raw"), stream = dir / (name + ".vxleb"), back = dir / (name + ".back.raw"),
+               grads = dir / (name + ".grad");
+    ref::Volume<std::uint16_t> v = volumeOf(c.dims, c.bits, raw);
+    std::string bytes;  // made its own mirror image, one point off it
+    for (int z = 0; z < c.dims[2]; ++z)
+      for (int y = 0; y < c.dims[1]; ++y)
+        for (int x = 0; x < c.dims[0]; ++x) {
+          std::uint16_t& s = v.at(x, y, z);
+          s = v.at(ref::lebMirrorImage(x, c.planes.sum[0]), ref::lebMirrorImage(y, c.planes.sum[1]),
+                   ref::lebMirrorImage(z, c.planes.sum[2]));
+          if (ref::Dims3{x, y, z} == c.off) s = static_cast<std::uint16_t>(s ^ 1);
+          bytes.push_back(static_cast<char>(s & 0xff));
+          if (c.bits == 16) bytes.push_back(static_cast<char>(s >> 8));
+        }
+    writeFileAtomically(raw, bytes);
+    const VoxelType type = c.bits == 8 ? VoxelType::UInt8 : VoxelType::UInt16;
+    EXPECT_EQ(findLebMirrorPlanesInFile(raw, c.dims, type), c.planes);
+    ref::LebEncodeOptions derive;
+    derive.deriveGradients = true;
+    const std::string expected = ref::encodeMirroredLeb(v, c.bits, c.planes, derive);
+    for (const std::uint64_t window : {kLebWindowBytes, std::uint64_t{1}}) {
+      SCOPED_TRACE(window);
+      const LebFileRun enc = encodeLebFile(raw, c.dims, type, stream, derive, window, {}, c.planes);
+      EXPECT_EQ(readWholeFile(stream), expected);
+      EXPECT_EQ(enc.mirrorExceptions, 1u);
+      const auto file = openAnyLebFile(stream);
+      ASSERT_TRUE(std::holds_alternative<MirroredLebFile>(file));
+      decodeLebFile(std::get<MirroredLebFile>(file), back, grads, 0, window);
+      EXPECT_EQ(readWholeFile(back), bytes);
+      const std::vector<std::int8_t> g = ref::quantizedGradients(v);
+      EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
+    }
+    try {
+      openLebFile(stream);
+      ADD_FAILURE() << "openLebFile read a mirrored stream";
+    } catch (const FormatError& e) {
+      EXPECT_NE(std::string(e.what()).find("offset 0: magic: 'VXLM', a mirrored stream"), std::string::npos);
+    }
+    for (const auto& p : std::filesystem::directory_iterator(raw.parent_path()))
+      EXPECT_EQ(p.path().filename().string().find(".tmp"), std::string::npos) << p.path() << " was left behind";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Volumes, LebFileCodec,

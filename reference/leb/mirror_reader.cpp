@@ -1,0 +1,50 @@
+// Random access into mirrored LEB streams (mirror_reader.h).
+#include "reference/leb/mirror_reader.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "reference/leb/gradients.h"
+
+namespace voxref::ref {
+
+MirroredLebReader::MirroredLebReader(std::shared_ptr<const MirroredLebStream> stream, std::size_t cacheBudgetBytes)
+    : stream_(std::move(stream)),
+      folded_(std::shared_ptr<const LebStream>(stream_, &stream_->inner), cacheBudgetBytes) {}
+
+std::uint16_t MirroredLebReader::sample(const GridPoint& p) {
+  const LebMirrorHeader& h = stream_->header;
+  for (int a = 0; a < 3; ++a)
+    if (p[a] < 0 || p[a] >= h.dims[a])
+      throw std::invalid_argument("MirroredLebReader: point " + pointText(p) + " lies outside the volume " +
+                                  dimsText(h.dims) + " (a mirrored stream answers the volume's points only)");
+  const GridPoint image{lebFoldedCoordinate(p[0], h.planes.sum[0]), lebFoldedCoordinate(p[1], h.planes.sum[1]),
+                        lebFoldedCoordinate(p[2], h.planes.sum[2])};
+  const std::uint32_t v = folded_.sample(image);
+  if (image == GridPoint{p[0], p[1], p[2]} || stream_->exceptions.empty()) return static_cast<std::uint16_t>(v);
+  const std::uint64_t index =
+      static_cast<std::uint64_t>(p[0]) +
+      static_cast<std::uint64_t>(h.dims[0]) *
+          (static_cast<std::uint64_t>(p[1]) + static_cast<std::uint64_t>(h.dims[1]) * static_cast<std::uint64_t>(p[2]));
+  const auto& e = stream_->exceptions;
+  const auto it = std::lower_bound(e.begin(), e.end(), index,
+                                   [](const LebMirrorException& x, std::uint64_t i) { return x.index < i; });
+  if (it == e.end() || it->index != index) return static_cast<std::uint16_t>(v);
+  const std::uint32_t mask = h.sampleBits == 16 ? 0xffffu : 0xffu;
+  return static_cast<std::uint16_t>((v + it->residual) & mask);
+}
+
+std::array<std::int8_t, 3> MirroredLebReader::gradient(const GridPoint& p) {
+  if (!stream_->header.derivedGradients)
+    throw std::invalid_argument("MirroredLebReader: the stream has no gradients (encoded without them)");
+  std::array<std::int8_t, 3> g{};
+  quantizeGradient(centralGradientAt(
+                       [&](int x, int y, int z) {
+                         return sample(GridPoint{x, y, z});
+                       },
+                       stream_->header.dims, p[0], p[1], p[2]),
+                   g.data());
+  return g;
+}
+
+}  // namespace voxref::ref

@@ -1,0 +1,308 @@
+// Mirrored LEB streams: FORMAT.md beside this file, "Mirrored streams", section by section.
+#include "reference/leb/mirror_stream.h"
+
+#include <array>
+#include <bit>
+#include <stdexcept>
+
+#include "reference/common/byte_stream.h"
+#include "reference/common/crc32.h"
+#include "reference/leb/context_codec.h"
+#include "reference/leb/delta_decisions.h"
+#include "reference/leb/gradients.h"
+#include "reference/leb/range_coder.h"
+
+namespace voxref::ref {
+namespace {
+
+constexpr char kMagic[4] = {'V', 'X', 'L', 'M'};
+constexpr std::size_t kExceptionsCrcAt = 68, kHeaderCrcAt = 72;
+
+// The models of the exceptions' decisions (FORMAT.md, "Mirrored streams", the exceptions): the
+// width of each gap down a tree of six levels, and the residual as the adaptive coder's decisions
+// in one context.
+struct ExceptionModels {
+  std::array<BitModel, 64> width{};  // nodes 1..63
+  DeltaDecisionModels residual;
+  explicit ExceptionModels(int sampleBits) : residual(sampleBits, 1, 1) {}
+};
+
+// One exception's decisions, for the encoder and the decoder alike: g = gap + 1 (>= 1; the gap is
+// the points skipped since the previous exception, or since the volume's first point) by its bit
+// width w, w - 1 down the tree, then its w - 1 bits below the leading one direct, most significant
+// first, sixteen at a time; then the residual as a signed value (delta_decisions.h). Returns g and
+// sets the residual's symbol, sign and magnitude (decoding), or codes those given (encoding).
+template <class Bits>
+std::uint64_t codeException(Bits bits, ExceptionModels& m, std::uint64_t g, int& symbol, int& negative,
+                            std::uint32_t& magnitude) {
+  const int w = g == 0 ? 1 : static_cast<int>(std::bit_width(g));
+  int node = 1;
+  for (int level = 5; level >= 0; --level) node = 2 * node + bits.bit(m.width[node], ((w - 1) >> level) & 1);
+  const int width = node - 64 + 1;
+  std::uint64_t v = 1;
+  for (int left = width - 1; left > 0;) {
+    const int n = left < 16 ? left : 16;
+    left -= n;
+    v = (v << n) | bits.direct(static_cast<std::uint32_t>((g >> left) & ((1u << n) - 1)), n);
+  }
+  symbol = codeDeltaDecisions(bits, m.residual, 0, 0, symbol, negative, magnitude);
+  return v;
+}
+
+// What is wrong with exception e, the next after the points before `after`, or nullptr.
+std::string exceptionFault(const LebMirrorHeader& h, std::uint64_t after, const LebMirrorException& e) {
+  const Dims3& d = h.dims;
+  if (e.index < after || e.index >= sampleCount(d))
+    return "index " + std::to_string(e.index) + " is not after the previous exception inside the volume's " +
+           std::to_string(sampleCount(d)) + " points";
+  const std::uint64_t x = e.index % static_cast<std::uint64_t>(d[0]);
+  const std::uint64_t y = (e.index / static_cast<std::uint64_t>(d[0])) % static_cast<std::uint64_t>(d[1]);
+  const std::uint64_t z = e.index / (static_cast<std::uint64_t>(d[0]) * static_cast<std::uint64_t>(d[1]));
+  if (!lebMirroredCoordinate(static_cast<int>(x), h.planes.sum[0]) &&
+      !lebMirroredCoordinate(static_cast<int>(y), h.planes.sum[1]) &&
+      !lebMirroredCoordinate(static_cast<int>(z), h.planes.sum[2]))
+    return "point (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
+           ") is kept, not mirrored: it has no image to differ from";
+  if (e.residual == 0 || e.residual >= (1u << h.sampleBits))
+    return "residual " + std::to_string(e.residual) + " is not in 1.." + std::to_string((1u << h.sampleBits) - 1);
+  return {};
+}
+
+std::string exceptionBytes(const LebMirrorHeader& h, const std::vector<LebMirrorException>& exceptions) {
+  if (exceptions.empty()) return {};
+  RangeEncoder enc;
+  ExceptionModels m(h.sampleBits);
+  std::uint64_t after = 0;
+  const std::uint32_t half = 1u << (h.sampleBits - 1);
+  for (const LebMirrorException& e : exceptions) {
+    if (const std::string fault = exceptionFault(h, after, e); !fault.empty())
+      throw std::invalid_argument("mirror exception: " + fault);
+    // The residual as a signed value of sampleBits bits.
+    const std::int64_t d = e.residual >= half ? std::int64_t{e.residual} - 2 * std::int64_t{half} : e.residual;
+    int negative = d < 0 ? 1 : 0;
+    std::uint32_t magnitude = static_cast<std::uint32_t>(d < 0 ? -d : d);
+    int symbol = static_cast<int>(std::bit_width(magnitude));
+    codeException(EncodeBits{enc}, m, e.index - after + 1, symbol, negative, magnitude);
+    after = e.index + 1;
+  }
+  return enc.finish();
+}
+
+std::vector<LebMirrorException> decodeExceptions(const LebMirrorHeader& h, std::uint64_t count, std::string_view bytes,
+                                                 std::size_t at) {
+  std::vector<LebMirrorException> out;
+  if (count == 0) return out;
+  RangeDecoder dec(bytes);
+  if (!dec.firstByteValid()) ByteReader::fail(at, "exceptions: the first byte of a range-coded part must be 0");
+  ExceptionModels m(h.sampleBits);
+  const std::uint64_t points = sampleCount(h.dims);
+  const std::int64_t half = std::int64_t{1} << (h.sampleBits - 1);
+  std::uint64_t after = 0;
+  for (std::uint64_t i = 0; i < count; ++i) {
+    int symbol = 0, negative = 0;
+    std::uint32_t magnitude = 0;
+    const std::uint64_t g = codeException(DecodeBits{dec}, m, 0, symbol, negative, magnitude);
+    if (dec.overrun())
+      ByteReader::fail(at, "exceptions: the " + std::to_string(bytes.size()) + " bytes end inside exception " +
+                               std::to_string(i) + " of " + std::to_string(count));
+    if (g - 1 >= points - after)
+      ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + " lies past the volume's " +
+                               std::to_string(points) + " points");
+    const std::int64_t d = negative ? -std::int64_t{magnitude} : std::int64_t{magnitude};
+    if (symbol == 0 || d < -half || d >= half)
+      ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + " has residual " + std::to_string(d) +
+                               ", expected a non-zero value in " + std::to_string(-half) + ".." +
+                               std::to_string(half - 1));
+    const LebMirrorException e{after + g - 1, static_cast<std::uint32_t>(d & (2 * half - 1))};
+    if (const std::string fault = exceptionFault(h, after, e); !fault.empty())
+      ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + ": " + fault);
+    out.push_back(e);
+    after = e.index + 1;
+  }
+  if (dec.consumed() != bytes.size())
+    ByteReader::fail(at, "exceptions_bytes: " + std::to_string(bytes.size()) + " bytes, but the " +
+                             std::to_string(count) + " exceptions take " + std::to_string(dec.consumed()));
+  return out;
+}
+
+std::string headerBytes(const LebMirrorHeader& h, std::uint64_t exceptionCount, std::string_view exceptions,
+                        std::uint64_t totalBytes) {
+  ByteWriter w;
+  w.bytes(kMagic, 4);
+  w.le<std::uint16_t>(kLebMirrorVersion);
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(h.sampleBits));
+  w.le<std::uint8_t>(h.derivedGradients ? 1 : 0);
+  for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(h.dims[a]));
+  for (int a = 0; a < 3; ++a) w.le<std::uint64_t>(static_cast<std::uint64_t>(h.planes.sum[a]));
+  w.le<std::uint64_t>(exceptionCount);
+  w.le<std::uint64_t>(exceptions.size());
+  w.le<std::uint64_t>(totalBytes);
+  w.le<std::uint32_t>(crc32(exceptions));
+  w.le<std::uint32_t>(crc32(w.str()));
+  return std::move(w.str());
+}
+
+// A StreamError of the folded stream, its offset moved to the whole stream's.
+StreamError inWholeStream(const StreamError& e, std::size_t innerOffset) {
+  const std::string prefix = "offset " + std::to_string(e.offset()) + ": ";
+  std::string detail = e.what();
+  if (detail.rfind(prefix, 0) == 0) detail.erase(0, prefix.size());
+  return StreamError(e.offset() + innerOffset, "folded stream: " + detail);
+}
+
+}  // namespace
+
+bool isMirroredLebStream(std::string_view bytes) { return bytes.substr(0, 4) == std::string_view(kMagic, 4); }
+
+std::uint64_t encodeMirroredLebTo(const LebVolumeIn& folded, const LebMirrorHeader& h,
+                                  const std::vector<LebMirrorException>& exceptions, const LebEncodeOptions& options,
+                                  const LebStreamWrite& write) {
+  if (lebStoresGradients(options))
+    throw std::invalid_argument(
+        "a mirrored stream stores no gradients (a gradient's component across a mirror plane changes sign): derive "
+        "them from the samples or leave them out");
+  if (!h.planes.any()) throw std::invalid_argument("a mirrored stream folds at least one axis: no mirror plane given");
+  requireLebMirrorPlanes(h.dims, h.planes);
+  if (folded.dims != lebFoldedDims(h.dims, h.planes) || folded.sampleBits != h.sampleBits)
+    throw std::invalid_argument("the folded volume is " + dimsText(folded.dims) + ", expected " +
+                                dimsText(lebFoldedDims(h.dims, h.planes)));
+  if (exceptions.size() > lebMirroredPoints(h.dims, h.planes) / kLebMirrorExceptionShare)
+    throw std::invalid_argument("more exceptions than one in " + std::to_string(kLebMirrorExceptionShare) +
+                                " mirrored points");
+  LebMirrorHeader header = h;
+  header.derivedGradients = options.gradients && options.deriveGradients;
+  const std::string coded = exceptionBytes(header, exceptions);
+  const std::uint64_t base = kLebMirrorHeaderBytes + coded.size();
+  write(kLebMirrorHeaderBytes, coded);
+  LebEncodeOptions inner = options;
+  inner.gradients = false;
+  inner.deriveGradients = false;
+  const std::uint64_t total = base + encodeLebTo(folded, inner, [&](std::uint64_t offset, std::string_view bytes) {
+                                write(base + offset, bytes);
+                              });
+  write(0, headerBytes(header, exceptions.size(), coded, total));
+  return total;
+}
+
+std::string encodeMirroredLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebMirrorPlanes& planes,
+                              const LebEncodeOptions& options) {
+  if (sampleBits != 8 && sampleBits != 16) throw std::invalid_argument("sample bits must be 8 or 16");
+  const Dims3 d = volume.dims();
+  requireLebMirrorPlanes(d, planes);
+  Volume<std::uint16_t> folded(lebFoldedDims(d, planes));
+  const std::vector<LebMirrorException> exceptions =
+      foldLebVolume(volume.data().data(), d, planes, sampleBits, folded.data().data());
+  const LebVolumeIn span{folded.dims(), sampleBits, nullptr, folded.data().data(), nullptr};
+  std::string out;
+  encodeMirroredLebTo(span, {d, sampleBits, planes, false}, exceptions, options,
+                      [&](std::uint64_t offset, std::string_view bytes) {
+                        if (out.size() < offset + bytes.size()) out.resize(offset + bytes.size());
+                        out.replace(offset, bytes.size(), bytes);
+                      });
+  return out;
+}
+
+MirroredLebStream parseMirroredLebStream(std::string bytes) {
+  auto owner = std::make_shared<const std::string>(std::move(bytes));
+  const std::string_view view = *owner;
+  return parseMirroredLebStream(view, std::move(owner));
+}
+
+MirroredLebStream parseMirroredLebStream(std::string_view b, std::shared_ptr<const void> owner) {
+  MirroredLebStream m;
+  LebMirrorHeader& h = m.header;
+  ByteReader r(b);
+  if (r.take(4, "magic") != std::string_view(kMagic, 4))
+    r.fail(0, "magic: expected 'VXLM' (not a mirrored LEB stream)");
+  r.need(kLebMirrorHeaderBytes - 4, "header");
+  if (!crc32Matches(b.substr(0, kHeaderCrcAt), static_cast<std::uint32_t>(loadLe(b.data() + kHeaderCrcAt, 4))))
+    r.fail(kHeaderCrcAt, "header_crc: CRC-32 mismatch (the header is corrupt)");
+  r.le<std::uint16_t>("version", kLebMirrorVersion, kLebMirrorVersion);
+  const std::size_t bitsAt = r.offset();
+  h.sampleBits = r.le<std::uint8_t>("sample_bits");
+  if (h.sampleBits != 8 && h.sampleBits != 16)
+    r.fail(bitsAt, "sample_bits: expected 8 or 16, got " + std::to_string(h.sampleBits));
+  h.derivedGradients = r.le<std::uint8_t>("gradients", 0, 1) == 1;
+  const auto maxExtent = static_cast<std::uint64_t>(LebGrid{kMaxLebK}.pointsPerAxis());
+  for (int a = 0; a < 3; ++a) h.dims[a] = static_cast<int>(r.le<std::uint32_t>("extent", 1, maxExtent));
+  for (int a = 0; a < 3; ++a) {
+    const std::size_t at = r.offset();
+    h.planes.sum[a] = static_cast<std::int64_t>(r.le<std::uint64_t>("mirror_sum"));
+    if (h.planes.sum[a] != kNoLebMirror && !lebMirrorSumValid(h.planes.sum[a], h.dims[a]))
+      r.fail(at, std::string("mirror_sum: ") + "xyz"[a] + ": expected -1 (none) or 1.." +
+                     std::to_string(2 * std::int64_t{h.dims[a]} - 3) + " for an extent of " +
+                     std::to_string(h.dims[a]) + ", got " + std::to_string(h.planes.sum[a]));
+  }
+  if (!h.planes.any()) r.fail(20, "mirror_sum: no axis is mirrored (a mirrored stream folds one at least)");
+  const std::uint64_t cap = lebMirroredPoints(h.dims, h.planes) / kLebMirrorExceptionShare;
+  const std::uint64_t count = r.le<std::uint64_t>("exception_count", 0, cap);
+  const std::size_t exceptionBytesAt = r.offset();
+  m.exceptionBytes = r.le<std::uint64_t>("exceptions_bytes");
+  const std::size_t totalAt = r.offset();
+  m.streamBytes = r.le<std::uint64_t>("total_bytes");
+  if (m.streamBytes != b.size())
+    r.fail(totalAt, "total_bytes: " + std::to_string(m.streamBytes) + ", but the stream is " +
+                        std::to_string(b.size()) + " bytes");
+  if (m.exceptionBytes > b.size() - kLebMirrorHeaderBytes)
+    r.fail(exceptionBytesAt, "exceptions_bytes: " + std::to_string(m.exceptionBytes) + " bytes past the header of a " +
+                                 std::to_string(b.size()) + "-byte stream");
+  const std::string_view coded = b.substr(kLebMirrorHeaderBytes, m.exceptionBytes);
+  if (!crc32Matches(coded, static_cast<std::uint32_t>(loadLe(b.data() + kExceptionsCrcAt, 4))))
+    r.fail(kExceptionsCrcAt, "exceptions_crc: CRC-32 mismatch (the exceptions are corrupt)");
+  m.exceptions = decodeExceptions(h, count, coded, kLebMirrorHeaderBytes);
+  m.innerOffset = kLebMirrorHeaderBytes + m.exceptionBytes;
+  try {
+    m.inner = parseLebStream(b.substr(m.innerOffset), std::move(owner));
+  } catch (const StreamError& e) {
+    throw inWholeStream(e, m.innerOffset);
+  }
+  const Dims3 folded = lebFoldedDims(h.dims, h.planes);
+  if (m.inner.dims != folded || m.inner.sampleBits != h.sampleBits)
+    r.fail(m.innerOffset, "folded stream: its volume is " + dimsText(m.inner.dims) + " uint" +
+                              std::to_string(m.inner.sampleBits) + ", expected the folded " + dimsText(folded) +
+                              " uint" + std::to_string(h.sampleBits));
+  if (m.inner.channels.size() != 1 || m.inner.derivedGradients)
+    r.fail(m.innerOffset, "folded stream: expected the data channel alone (the gradients are never folded)");
+  return m;
+}
+
+void decodeMirroredLebInto(const MirroredLebStream& m, const LebVolumeOut& out, int threads, const LebWindow& window) {
+  const LebMirrorHeader& h = m.header;
+  if (out.dims != h.dims || out.sampleBits != h.sampleBits || (out.gradients && !h.derivedGradients) ||
+      (out.data8 == nullptr) == (out.data16 == nullptr) || (out.data8 && h.sampleBits != 8))
+    throw std::invalid_argument("decodeMirroredLebInto: the output is not the stream's volume (" + dimsText(h.dims) +
+                                " uint" + std::to_string(h.sampleBits) + ")");
+  const LebVolumeOut folded{lebFoldedDims(h.dims, h.planes), h.sampleBits, out.data8, out.data16, nullptr};
+  const bool gradients = out.gradients != nullptr;
+  try {
+    decodeLebInto(m.inner, folded, threads, lebProgressPart(window, 0, gradients ? 0.6 : 0.8));
+  } catch (const StreamError& e) {
+    throw inWholeStream(e, m.innerOffset);
+  }
+  const LebWindow unfoldWindow = lebProgressPart(window, gradients ? 0.6 : 0.8, gradients ? 0.1 : 0.2);
+  if (out.data8)
+    unfoldLebVolume(out.data8, h.dims, h.planes, m.exceptions, unfoldWindow);
+  else
+    unfoldLebVolume(out.data16, h.dims, h.planes, h.sampleBits, m.exceptions, unfoldWindow);
+  if (gradients)
+    withLebSamples(out, [&](const auto* samples) {
+      quantizedGradientsInto(samples, h.dims, out.gradients, threads, lebProgressPart(window, 0.7, 0.3));
+    });
+}
+
+LebDecoded decodeMirroredLeb(const MirroredLebStream& m, int threads) {
+  LebDecoded d{Volume<std::uint16_t>(m.header.dims), {}};
+  if (m.header.derivedGradients) d.gradients.resize(3 * sampleCount(m.header.dims));
+  decodeMirroredLebInto(m,
+                        {m.header.dims, m.header.sampleBits, nullptr, d.data.data().data(),
+                         m.header.derivedGradients ? d.gradients.data() : nullptr},
+                        threads);
+  return d;
+}
+
+std::uint64_t mirroredLebDecodeMemoryBytes(const MirroredLebStream& m) {
+  const std::uint64_t samples = sampleCount(m.header.dims);
+  return (m.header.derivedGradients ? 5 : 2) * samples + lebDecodeShellBytes(m.inner);
+}
+
+}  // namespace voxref::ref
