@@ -112,14 +112,13 @@ std::vector<LebMirrorException> fold(const T* v, const Dims3& d, const LebMirror
                                      T* folded) {
   requireLebMirrorPlanes(d, planes);
   const FoldTables t(d, planes);
-  const std::uint32_t mask = sampleBits == 16 ? 0xffffu : 0xffu;
   std::vector<LebMirrorException> exceptions;
   std::size_t out = 0;
   forEachPointAndImage(d, t, [&](std::size_t i, int, int, int, std::size_t image) {
     if (image == i)
       folded[out++] = v[i];  // kept points come in the folded volume's order
     else if (v[i] != v[image])
-      exceptions.push_back({i, (static_cast<std::uint32_t>(v[i]) - static_cast<std::uint32_t>(v[image])) & mask});
+      exceptions.push_back({i, lebMirrorResidual(v[i], v[image], sampleBits)});
   });
   const std::uint64_t cap = lebMirroredPoints(d, planes) / kLebMirrorExceptionShare;
   if (exceptions.size() > cap)
@@ -143,9 +142,8 @@ void unfold(T* v, const Dims3& d, const LebMirrorPlanes& planes, int sampleBits,
         v[linear(d, x, y, z)] = v[linear(f, t.folded[0][x], t.folded[1][y], t.folded[2][z])];
     if (window) window(static_cast<double>(d[2] - z) / d[2]);
   }
-  const std::uint32_t mask = sampleBits == 16 ? 0xffffu : 0xffu;
   for (const LebMirrorException& e : exceptions)
-    v[e.index] = static_cast<T>((static_cast<std::uint32_t>(v[e.index]) + e.residual) & mask);
+    v[e.index] = static_cast<T>(lebMirrorSample(v[e.index], e.residual, sampleBits));
 }
 
 }  // namespace

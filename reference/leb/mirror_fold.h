@@ -64,6 +64,15 @@ struct LebMirrorException {
   bool operator==(const LebMirrorException&) const = default;
 };
 
+// A mirrored point's sample from its image's and its residual, and the residual from both
+// (modulo 2^sampleBits; the residual is 0 for a point that is not an exception).
+inline std::uint32_t lebMirrorSample(std::uint32_t image, std::uint32_t residual, int sampleBits) {
+  return (image + residual) & ((1u << sampleBits) - 1);
+}
+inline std::uint32_t lebMirrorResidual(std::uint32_t sample, std::uint32_t image, int sampleBits) {
+  return (sample - image) & ((1u << sampleBits) - 1);
+}
+
 // The planes worth folding: on each axis of extent at least 4, the sum whose paired slices' sample
 // sums differ least (relatively) among those mirroring a quarter of the axis or more, kept when at
 // most one mirrored point in 4 x kLebMirrorExceptionShare differs from its image; then, while the

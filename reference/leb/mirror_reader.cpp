@@ -18,10 +18,13 @@ std::uint16_t MirroredLebReader::sample(const GridPoint& p) {
     if (p[a] < 0 || p[a] >= h.dims[a])
       throw std::invalid_argument("MirroredLebReader: point " + pointText(p) + " lies outside the volume " +
                                   dimsText(h.dims) + " (a mirrored stream answers the volume's points only)");
-  const GridPoint image{lebFoldedCoordinate(p[0], h.planes.sum[0]), lebFoldedCoordinate(p[1], h.planes.sum[1]),
-                        lebFoldedCoordinate(p[2], h.planes.sum[2])};
-  const std::uint32_t v = folded_.sample(image);
-  if (image == GridPoint{p[0], p[1], p[2]} || stream_->exceptions.empty()) return static_cast<std::uint16_t>(v);
+  const std::int64_t* sum = h.planes.sum.data();
+  const std::uint32_t v = folded_.sample(GridPoint{lebFoldedCoordinate(p[0], sum[0]), lebFoldedCoordinate(p[1], sum[1]),
+                                                   lebFoldedCoordinate(p[2], sum[2])});
+  // Only a mirrored point can be an exception.
+  const bool mirrored =
+      lebMirroredCoordinate(p[0], sum[0]) || lebMirroredCoordinate(p[1], sum[1]) || lebMirroredCoordinate(p[2], sum[2]);
+  if (!mirrored || stream_->exceptions.empty()) return static_cast<std::uint16_t>(v);
   const std::uint64_t index =
       static_cast<std::uint64_t>(p[0]) +
       static_cast<std::uint64_t>(h.dims[0]) *
@@ -30,8 +33,7 @@ std::uint16_t MirroredLebReader::sample(const GridPoint& p) {
   const auto it = std::lower_bound(e.begin(), e.end(), index,
                                    [](const LebMirrorException& x, std::uint64_t i) { return x.index < i; });
   if (it == e.end() || it->index != index) return static_cast<std::uint16_t>(v);
-  const std::uint32_t mask = h.sampleBits == 16 ? 0xffffu : 0xffu;
-  return static_cast<std::uint16_t>((v + it->residual) & mask);
+  return static_cast<std::uint16_t>(lebMirrorSample(v, it->residual, h.sampleBits));
 }
 
 std::array<std::int8_t, 3> MirroredLebReader::gradient(const GridPoint& p) {

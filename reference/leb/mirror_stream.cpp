@@ -49,7 +49,7 @@ std::uint64_t codeException(Bits bits, ExceptionModels& m, std::uint64_t g, int&
   return v;
 }
 
-// What is wrong with exception e, the next after the points before `after`, or nullptr.
+// What is wrong with exception e, the next after the points before `after`, or an empty string.
 std::string exceptionFault(const LebMirrorHeader& h, std::uint64_t after, const LebMirrorException& e) {
   const Dims3& d = h.dims;
   if (e.index < after || e.index >= sampleCount(d))
