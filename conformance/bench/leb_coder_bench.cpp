@@ -162,8 +162,8 @@ CoderFigure contextGradients(const LebDataset& d, const std::vector<std::int8_t>
   rest.min = std::max(whole.min - samples.max, 1e-9);
   rest.max = std::max(whole.max - samples.min, 1e-9);
   const ref::LebChannel& g = both.channels[1];
-  return {"context (voxref's: vectors from their corners', gz from the unit sphere; " + contextPages(pageBits) +
-              ", the whole volume decoded: the stream's decode less the samples')",
+  return {"context (voxref's: vectors from their corners' and the page's repeats, gz from the unit sphere; " +
+              contextPages(pageBits) + ", the whole volume decoded: the stream's decode less the samples')",
           static_cast<double>(g.descriptorBytes + g.pageOffset.back()), rest};
 }
 
@@ -409,7 +409,9 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "rows are one stream of the samples and the gradients ('Context pages', 'Context gradient pages'): each point "
       "predicted from all its corners, with contexts from their range and from its page's neighbours of its class, "
       "so a page decodes with its corners' values, which random access reads anyway; a gradient's gz is coded from "
-      "the unit sphere given gx and gy. The data row counts the header, the data's descriptor and pages, the "
+      "the unit sphere given gx and gy, and a vector that repeats one of its corners' or of its page's is coded by "
+      "where it was seen (each page codes its gradients both with and without these repeats and keeps the "
+      "shorter). The data row counts the header, the data's descriptor and pages, the "
       "gradients row the gradients' descriptor and pages; the data's decode figure is the whole volume's samples "
       "(the stream of the samples alone), the gradients' the whole stream's decode less that (medians of the same "
       "run). The rows 'gradients diffused N steps' code the paper's Table 1 gradients (diffused before "

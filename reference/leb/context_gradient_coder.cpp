@@ -1,6 +1,8 @@
 #include "reference/leb/context_gradient_coder.h"
 
+#include <bit>
 #include <cmath>
+#include <optional>
 
 #include "reference/common/byte_stream.h"
 #include "reference/leb/prediction.h"
@@ -24,6 +26,7 @@ ContextGradientPageState::ContextGradientPageState(int pageBits, std::uint64_t p
       z_(8, kGradientMagnitudeContexts, 1),
       zero_(kGradientZeroContexts),
       zSign_(kGradientSignContexts),
+      recentVectors_(std::size_t{1} << pageBits),
       begin_(page << pageBits),
       zeroVector_(std::size_t{1} << pageBits, 0),
       signedSymbol_{std::vector<std::int8_t>(std::size_t{1} << pageBits, 0),
@@ -71,7 +74,49 @@ void ContextGradientPageState::record(std::uint64_t h, const std::array<int, 2>&
 namespace {
 
 // What decoding a vector found wrong (the encoder never makes one): the decoder's message.
-enum class GradientProblem { None, ResidualRange, ZeroFlagged, SignMismatch };
+enum class GradientProblem {
+  None,
+  ResidualRange,
+  ZeroFlagged,
+  SignMismatch,
+  CornerIndex,     // a corner's vector past the corners' vectors
+  RankRange,       // a recent vector past the page's
+  CornerAsRecent,  // a corner's vector coded as a recent one
+  RepeatInFull     // a corner's or a recent vector coded in full
+};
+
+// Records a repeated vector's gx and gy residuals for the neighbours' contexts, as coding it in
+// full would have (the same symbols and signs).
+void recordRepeat(ContextGradientPageState& state, std::uint64_t h, const GradientPoint& point,
+                  const std::array<std::int8_t, 3>& g) {
+  std::array<int, 2> symbol{0, 0};
+  std::array<bool, 2> negative{false, false};
+  for (std::size_t a = 0; a < 2; ++a) {
+    const std::int32_t r = predictionDelta(biasedComponent(g[a]), point.corners.component[a].prediction, 8);
+    symbol[a] = lead1Symbol(r);
+    negative[a] = r < 0;
+  }
+  state.record(h, symbol, negative);
+}
+
+// A rank r as q = r + 1: its bit width w (1..32) as w - 1 down the five-level tree of models, then
+// the w - 1 bits of q below its leading one, direct, most significant first, sixteen at a time.
+template <class Bits>
+std::uint64_t codeRank(Bits bits, ContextGradientPageState& state, int context, std::uint32_t rank) {
+  const std::uint64_t q = std::uint64_t{rank} + 1;
+  const int w = static_cast<int>(std::bit_width(q));
+  int node = 1;
+  for (int level = 4; level >= 0; --level)
+    node = 2 * node + bits.bit(state.rankModel(context, node), ((w - 1) >> level) & 1);
+  const int width = node - 32 + 1;
+  std::uint64_t v = 1;
+  for (int left = width - 1; left > 0;) {
+    const int n = left < 16 ? left : 16;
+    left -= n;
+    v = (v << n) | bits.direct(static_cast<std::uint32_t>((q >> left) & ((1u << n) - 1)), n);
+  }
+  return v - 1;
+}
 
 // FORMAT.md, "Context gradient pages": one vector's decisions, in one function for the encoder
 // (EncodeBits: g is the vector, and stays) and the decoder (DecodeBits: g is set). Records what the
@@ -87,7 +132,37 @@ GradientProblem codeContextGradient(Bits bits, ContextGradientPageState& state, 
     state.recordZero(h);
     return GradientProblem::None;
   }
-  // 2. gx and gy, each from its corners' mean, as the samples are coded; 3. gz's sign, 4. gz from
+  const GradientCorners& corners = point.corners;
+  RecentVectors& recent = state.recentVectors();
+  const auto repeat = [&](const std::array<std::int8_t, 3>& v) {
+    g = v;
+    recordRepeat(state, h, point, g);
+    recent.use(gradientKey(g));
+    return GradientProblem::None;
+  };
+  // 2. One of the corners' vectors, by its place among them.
+  const int cornerAt = corners.find(g);  // the encoder's; the decoder's g is (0, 0, 0), never a corner's
+  if (state.repeats && corners.vectorCount > 0 &&
+      bits.bit(state.cornerModel((corners.vectorCount > 1 ? 1 : 0) + (corners.zeroCorners > 0 ? 2 : 0)),
+               cornerAt >= 0 ? 1 : 0) == 1) {
+    const auto i = bits.direct(static_cast<std::uint32_t>(cornerAt >= 0 ? cornerAt : 0),
+                               static_cast<int>(std::bit_width(static_cast<unsigned>(corners.vectorCount - 1))));
+    if (i >= static_cast<std::uint32_t>(corners.vectorCount)) return GradientProblem::CornerIndex;
+    return repeat(corners.vectors[i]);
+  }
+  // 3. One of the page's recent vectors, by its rank.
+  if (state.repeats && recent.size() > 0) {
+    const std::optional<std::uint32_t> rank = recent.rankOf(gradientKey(g));  // the encoder's
+    const int context = corners.vectorCount > 0 ? 1 : 0;
+    if (bits.bit(state.recentModel(context + (corners.zeroCorners > 0 ? 2 : 0)), rank ? 1 : 0) == 1) {
+      const std::uint64_t r = codeRank(bits, state, context, rank.value_or(0));
+      if (r >= recent.size()) return GradientProblem::RankRange;
+      const std::array<std::int8_t, 3> v = gradientOfKey(recent.at(static_cast<std::uint32_t>(r)));
+      if (corners.find(v) >= 0) return GradientProblem::CornerAsRecent;
+      return repeat(v);
+    }
+  }
+  // 4. gx and gy, each from its corners' mean, as the samples are coded; 5. gz's sign, 6. gz from
   // the sphere.
   bool inRange = true;
   std::array<int, 2> symbol{0, 0};
@@ -109,6 +184,10 @@ GradientProblem codeContextGradient(Bits bits, ContextGradientPageState& state, 
   if (!inRange || !z.inRange(8)) return GradientProblem::ResidualRange;
   if ((g[2] < 0) != (zNegative != 0)) return GradientProblem::SignMismatch;
   if (g[0] == 0 && g[1] == 0 && g[2] == 0) return GradientProblem::ZeroFlagged;
+  if (state.repeats) {
+    if (corners.find(g) >= 0 || recent.rankOf(gradientKey(g))) return GradientProblem::RepeatInFull;
+    recent.use(gradientKey(g));
+  }
   return GradientProblem::None;
 }
 
@@ -138,6 +217,15 @@ std::array<std::int8_t, 3> ContextGradientPageReader::next(std::uint64_t h, cons
       input_.fail(at + "gz is " + std::to_string(g[2]) + ", against its coded sign");
     case GradientProblem::ZeroFlagged:
       input_.fail(at + "(0, 0, 0) coded as a vector that is not zero");
+    case GradientProblem::CornerIndex:
+      input_.fail(at + "a corner's vector past the point's " + std::to_string(point.corners.vectorCount));
+    case GradientProblem::RankRange:
+      input_.fail(at + "a recent vector's rank past the page's " + std::to_string(state_.recentVectors().size()) +
+                  " vectors");
+    case GradientProblem::CornerAsRecent:
+      input_.fail(at + "a corner's vector coded as a recent one");
+    case GradientProblem::RepeatInFull:
+      input_.fail(at + "a corner's or a recent vector coded in full");
   }
   ++read_;
   return g;
