@@ -38,7 +38,8 @@ std::vector<std::uint32_t> contextStoredPages(const HzOrder& order, const Dims3&
 // `write`, and returns the offset after it.
 // Memory beside the span: the stored pages' table (12 bytes a page) and one batch of coded pages
 // (4 x workers pages of at most about 2^pageBits x 3 bytes, 9 for the gradients), plus 2^pageBits
-// bytes a worker (3 for the gradients).
+// bytes a worker (3 for the gradients, and 8 more with a gradient page's recent vectors, whose
+// page is coded twice: encodeContextGradientPage).
 std::uint64_t encodeContextChannel(const HzOrder& order, const LebVolumeIn& v, LebChannelKind kind,
                                    const std::vector<std::uint32_t>& stored, int pageBits, int threads,
                                    const LebProgress& progress, const LebStreamWrite& write, std::uint64_t offset);
@@ -54,7 +55,7 @@ std::uint64_t contextPagesNeededBelow(const HzOrder& order, int pageBits, std::u
 // first (StreamError for a page holding points of the volume that the stream lacks), then each page
 // as it is decoded (its CRC-32, its values, its end).
 // Memory beside `out`: the table of waves (8 bytes a stored page) and 2^pageBits bytes a worker
-// (3 for the gradients).
+// (3 for the gradients, and 8 more for a gradient page's recent vectors, recent_vectors.h).
 void decodeContextChannels(const LebStream& s, const HzOrder& order, const LebVolumeOut& out, int threads,
                            const LebProgress& progress);
 

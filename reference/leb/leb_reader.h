@@ -25,7 +25,8 @@
 // way: seven samples instead of one gradient.
 //
 // Memory: the page cache's budget, plus the page being decoded (2^pageBits x components x 2 bytes,
-// at most 6 MiB: pageBits <= 20 is checked by parseLebStream), plus the memo: kMemoSlotBytes a
+// at most 6 MiB: pageBits <= 20 is checked by parseLebStream; a context gradient page also its
+// recent vectors, 8 bytes a point and a hash entry a distinct vector), plus the memo: kMemoSlotBytes a
 // slot, the power of two of slots at most cacheBudgetBytes / kMemoSlotBytes (at least
 // kMinMemoSlots, and no more than the grid's bricks need), plus the query's own table (the
 // points of one query that met a slot taken in the same query: at most its points and their
