@@ -99,25 +99,6 @@ void recordRepeat(ContextGradientPageState& state, std::uint64_t h, const Gradie
   state.record(h, symbol, negative);
 }
 
-// A rank r as q = r + 1: its bit width w (1..32) as w - 1 down the five-level tree of models, then
-// the w - 1 bits of q below its leading one, direct, most significant first, sixteen at a time.
-template <class Bits>
-std::uint64_t codeRank(Bits bits, ContextGradientPageState& state, int context, std::uint32_t rank) {
-  const std::uint64_t q = std::uint64_t{rank} + 1;
-  const int w = static_cast<int>(std::bit_width(q));
-  int node = 1;
-  for (int level = 4; level >= 0; --level)
-    node = 2 * node + bits.bit(state.rankModel(context, node), ((w - 1) >> level) & 1);
-  const int width = node - 32 + 1;
-  std::uint64_t v = 1;
-  for (int left = width - 1; left > 0;) {
-    const int n = left < 16 ? left : 16;
-    left -= n;
-    v = (v << n) | bits.direct(static_cast<std::uint32_t>((q >> left) & ((1u << n) - 1)), n);
-  }
-  return v - 1;
-}
-
 // FORMAT.md, "Context gradient pages": one vector's decisions, in one function for the encoder
 // (EncodeBits: g is the vector, and stays) and the decoder (DecodeBits: g is set). Records what the
 // neighbours' contexts need.
@@ -155,7 +136,11 @@ GradientProblem codeContextGradient(Bits bits, ContextGradientPageState& state, 
     const std::optional<std::uint32_t> rank = recent.rankOf(gradientKey(g));  // the encoder's
     const int context = corners.vectorCount > 0 ? 1 : 0;
     if (bits.bit(state.recentModel(context + (corners.zeroCorners > 0 ? 2 : 0)), rank ? 1 : 0) == 1) {
-      const std::uint64_t r = codeRank(bits, state, context, rank.value_or(0));
+      // The rank r as r + 1 by its bit width, five levels of models per context.
+      const std::uint64_t r = codeByBitWidth(
+                                  bits, [&](int node) -> BitModel& { return state.rankModel(context, node); }, 5,
+                                  std::uint64_t{rank.value_or(0)} + 1) -
+                              1;
       if (r >= recent.size()) return GradientProblem::RankRange;
       const std::array<std::int8_t, 3> v = gradientOfKey(recent.at(static_cast<std::uint32_t>(r)));
       if (corners.find(v) >= 0) return GradientProblem::CornerAsRecent;

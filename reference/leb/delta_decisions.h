@@ -16,6 +16,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -96,6 +97,28 @@ int codeDeltaDecisions(Bits bits, DeltaDecisionModels& m, int context, int signC
   below = (below << direct) | bits.direct(magnitude & ((1u << direct) - 1), direct);
   magnitude = (1u << rest) | below;
   return s;
+}
+
+// Codes a positive integer q by its bit width w: w - 1 as `levels` binary decisions down a tree of
+// models tree(node) (node 1 at the root, then 2 node + the bit; nodes below 2^levels), most
+// significant first, then the w - 1 bits of q below its leading one, direct (probability 1/2), most
+// significant first, sixteen at a time. Returns q: the encoder's (which must have w <= 2^levels),
+// or the one read (the encoder's argument is then ignored). The gaps of a mirrored stream's
+// exceptions (mirror_stream.cpp) and the ranks of a gradient page's recent vectors
+// (context_gradient_coder.cpp) are coded so.
+template <class Bits, class Tree>
+std::uint64_t codeByBitWidth(Bits bits, Tree&& tree, int levels, std::uint64_t q) {
+  const int w = q == 0 ? 1 : static_cast<int>(std::bit_width(q));
+  int node = 1;
+  for (int level = levels - 1; level >= 0; --level) node = 2 * node + bits.bit(tree(node), ((w - 1) >> level) & 1);
+  const int width = node - (1 << levels) + 1;
+  std::uint64_t v = 1;
+  for (int left = width - 1; left > 0;) {
+    const int n = left < 16 ? left : 16;
+    left -= n;
+    v = (v << n) | bits.direct(static_cast<std::uint32_t>((q >> left) & ((1u << n) - 1)), n);
+  }
+  return v;
 }
 
 }  // namespace voxref::ref

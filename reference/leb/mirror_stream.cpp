@@ -29,22 +29,13 @@ struct ExceptionModels {
 
 // One exception's decisions, for the encoder and the decoder alike: g = gap + 1 (>= 1; the gap is
 // the points skipped since the previous exception, or since the volume's first point) by its bit
-// width w, w - 1 down the tree, then its w - 1 bits below the leading one direct, most significant
-// first, sixteen at a time; then the residual as a signed value (delta_decisions.h). Returns g and
-// sets the residual's symbol, sign and magnitude (decoding), or codes those given (encoding).
+// width down the tree of six levels (codeByBitWidth); then the residual as a signed value (delta_decisions.h). Returns
+// g and sets the residual's symbol, sign and magnitude (decoding), or codes those given (encoding).
 template <class Bits>
 std::uint64_t codeException(Bits bits, ExceptionModels& m, std::uint64_t g, int& symbol, int& negative,
                             std::uint32_t& magnitude) {
-  const int w = g == 0 ? 1 : static_cast<int>(std::bit_width(g));
-  int node = 1;
-  for (int level = 5; level >= 0; --level) node = 2 * node + bits.bit(m.width[node], ((w - 1) >> level) & 1);
-  const int width = node - 64 + 1;
-  std::uint64_t v = 1;
-  for (int left = width - 1; left > 0;) {
-    const int n = left < 16 ? left : 16;
-    left -= n;
-    v = (v << n) | bits.direct(static_cast<std::uint32_t>((g >> left) & ((1u << n) - 1)), n);
-  }
+  const std::uint64_t v = codeByBitWidth(
+      bits, [&](int node) -> BitModel& { return m.width[static_cast<std::size_t>(node)]; }, 6, g);
   symbol = codeDeltaDecisions(bits, m.residual, 0, 0, symbol, negative, magnitude);
   return v;
 }
