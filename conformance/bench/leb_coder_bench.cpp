@@ -145,6 +145,20 @@ CoderFigure contextSamples(const LebDataset& d, int pageBits, int threads, int r
           static_cast<double>(alone.bytes.size()), measure([&] { (void)ref::decodeLeb(alone, 1); }, runs)};
 }
 
+// A whole decode's timing less a part's measured beside it (the rest's median, and its bounds).
+Timing lessTiming(const Timing& whole, const Timing& part) {
+  Timing rest = whole;
+  rest.median = std::max(whole.median - part.median, 1e-9);
+  rest.min = std::max(whole.min - part.max, 1e-9);
+  rest.max = std::max(whole.max - part.min, 1e-9);
+  return rest;
+}
+
+// Two decodes' timings added (both channels' decodes, each measured on its own).
+Timing sumTiming(const Timing& a, const Timing& b) {
+  return {a.median + b.median, a.min + b.min, a.max + b.max, std::min(a.runs, b.runs), false};
+}
+
 // The gradients' figure of the stream of the samples and the stored `gradients` (3 int8 a
 // sample): their descriptor and pages, and their decode, the whole stream's less `samples`
 // (contextSamples' decode at the same page size, measured before it in the same run).
@@ -156,11 +170,7 @@ CoderFigure contextGradients(const LebDataset& d, const std::vector<std::int8_t>
   const ref::LebDecoded back = ref::decodeLeb(both, 1);
   if (back.data.data() != d.volume.data() || back.gradients != gradients)
     throw std::runtime_error("leb.coder: a context stream did not decode to its samples and gradients");
-  const Timing whole = measure([&] { (void)ref::decodeLeb(both, 1); }, runs);
-  Timing rest = whole;
-  rest.median = std::max(whole.median - samples.median, 1e-9);
-  rest.min = std::max(whole.min - samples.max, 1e-9);
-  rest.max = std::max(whole.max - samples.min, 1e-9);
+  const Timing rest = lessTiming(measure([&] { (void)ref::decodeLeb(both, 1); }, runs), samples);
   const ref::LebChannel& g = both.channels[1];
   return {"context (voxref's: vectors from their corners' and the page's repeats, gz from the unit sphere; " +
               contextPages(pageBits) + ", the whole volume decoded: the stream's decode less the samples')",
@@ -181,6 +191,29 @@ std::optional<CoderFigure> contextMirrored(const LebDataset& d, const ref::LebMi
                          std::to_string(m.exceptions.size()) + " points off their image; " + contextPages(pageBits) +
                          ", the whole volume decoded and unfolded)",
                      static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
+}
+
+// The mirrored stream that stores `gradients` folded with the samples across `planes`: the whole
+// stream's bytes and its whole decode, checked in the run (planes found: the caller's).
+CoderFigure contextMirroredWithGradients(const LebDataset& d, const std::vector<std::int8_t>& gradients,
+                                         const ref::LebMirrorPlanes& planes, int pageBits, int threads, int runs) {
+  const ref::MirroredLebStream m = ref::parseMirroredLebStream(
+      ref::encodeMirroredLeb(d.volume, d.bits, planes, contextOptions(pageBits, threads, true), gradients));
+  const ref::LebDecoded back = ref::decodeMirroredLeb(m, 1);
+  if (back.data.data() != d.volume.data() || back.gradients != gradients)
+    throw std::runtime_error("leb.coder: a mirrored stream did not decode to its samples and gradients");
+  return {"context, mirrored, gradients folded with the samples (" + ref::lebMirrorPlanesText(planes) + "; " +
+              std::to_string(m.exceptions.size()) + " points off their image in sample or gradient; " +
+              contextPages(pageBits) + ", the whole volume decoded and unfolded)",
+          static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
+}
+
+// The gradients' figure of that stream: its bytes and decode less those of the mirrored stream of
+// the samples alone across the same planes (`samples`, measured before it in the same run), what
+// storing the gradients adds, their exceptions included.
+CoderFigure gradientsPart(const CoderFigure& whole, const CoderFigure& samples) {
+  return {whole.coder + "; the bytes and decode time it adds to the samples' mirrored stream",
+          whole.bytes - samples.bytes, lessTiming(whole.decode, samples.decode)};
 }
 
 CoderFigure baseline(const BaselineResult& b) {
@@ -228,7 +261,8 @@ struct ChannelFigures {
   double tripleEntropy = 0.0;                  // gradients only
   Timing derive;                               // gradients only: quantizedGradients of the samples, one thread
   double repeatedRows = 0.0;                   // repeatedRowShare of the channel's x-rows
-  std::vector<CoderFigure> mirrored;           // data only: contextMirrored at 2^16 and 2^18, if a plane
+  std::vector<CoderFigure> mirrored;           // contextMirrored (data), gradientsPart, at 2^16 and 2^18, if a plane
+  std::vector<CoderFigure> mirroredWhole;      // gradients: contextMirroredWithGradients, whole, as `mirrored`
 };
 
 std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDataset& d) {
@@ -243,7 +277,7 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
   for (const ref::LebChannelKind kind : {ref::LebChannelKind::Data, ref::LebChannelKind::Gradients}) {
     const bool data = kind == ref::LebChannelKind::Data;
     const std::string raw = data ? dataBytes(d.volume, d.bits) : gradientBytes(d.volume);
-    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, {}, 0.0, {}};
+    ChannelFigures f{kind, static_cast<double>(raw.size()), {}, 0.0, {}, 0.0, {}, {}};
     const ChannelPages p12 = channelPages(d, kind, 12);
     f.coders[kLead1] = lead1(s, p12, runs);
     f.coders[kAdaptive12] = adaptive(p12, 12, runs);
@@ -258,11 +292,16 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
     for (const auto& [row, pageBits, at] : {std::tuple{kContext16, 16, 0}, std::tuple{kContext18, 18, 1}})
       f.coders[row] =
           data ? samples[at] : contextGradients(d, gradients, pageBits, o.threads, runs, samples[at].decode);
-    if (data) {
-      const ref::LebMirrorPlanes planes = ref::findLebMirrorPlanes(d.volume.data().data(), d.volume.dims());
-      for (const int pageBits : {16, 18})
-        if (std::optional<CoderFigure> m = contextMirrored(d, planes, pageBits, o.threads, runs))
-          f.mirrored.push_back(std::move(*m));
+    // Folded with the samples, the gradients take part in the search for planes.
+    const ref::LebMirrorPlanes planes =
+        ref::findLebMirrorPlanes(d.volume.data().data(), data ? nullptr : gradients.data(), d.volume.dims());
+    for (const int pageBits : {16, 18}) {
+      std::optional<CoderFigure> m = contextMirrored(d, planes, pageBits, o.threads, runs);
+      if (m && !data) {
+        f.mirroredWhole.push_back(contextMirroredWithGradients(d, gradients, planes, pageBits, o.threads, runs));
+        m = gradientsPart(f.mirroredWhole.back(), *m);
+      }
+      if (m) f.mirrored.push_back(std::move(*m));
     }
     f.repeatedRows = repeatedRowShare(raw, raw.size() / (static_cast<std::size_t>(d.volume.dims()[1]) *
                                                          static_cast<std::size_t>(d.volume.dims()[2])));
@@ -340,10 +379,11 @@ BenchTable lebCoderBench(const BenchOptions& o) {
         row["coders"].push_back(
             {{"coder", c.coder}, {"bytes", c.bytes}, {"ratio", f.rawBytes / c.bytes}, {"decode", toJson(c.decode)}});
       }
-      if (data && f.mirrored.empty())
+      if (f.mirrored.empty())
         t.rows.push_back({d.name, channel,
-                          "context, mirrored: no mirror plane found (the volume is not its own mirror image on any "
-                          "axis), so no folded stream",
+                          std::string("context, mirrored: no mirror plane found (the volume is not its own mirror "
+                                      "image on any axis") +
+                              (data ? "" : " in its samples and gradients") + "), so no folded stream",
                           "-", "-", ""});
       for (const CoderFigure& c : f.mirrored) {
         const double against = goal.bytes / c.bytes;
@@ -431,8 +471,11 @@ BenchTable lebCoderBench(const BenchOptions& o) {
       "store such a volume folded (reference/leb/FORMAT.md, 'Mirrored streams'): the planes findLebMirrorPlanes "
       "finds, one side of each as a context stream, the other side as its images, and the points off their image as "
       "exceptions; the ratio counts the whole stream (its header, the exceptions and the folded stream), the decode "
-      "figure the whole volume decoded and unfolded. Its gradients are derived from the samples or none (a mirror "
-      "flips a gradient's component), so it has no gradients row.";
+      "figure the whole volume decoded and unfolded. Its gradients row stores the gradients folded with the samples "
+      "(a mirrored point's gradient is its image's with the component across each of its planes negated; the points "
+      "off that are exceptions too, and the planes are searched with the gradients, so they may be fewer than the "
+      "data's): it counts the bytes the gradients add to the mirrored stream of the samples alone across the same "
+      "planes, exceptions included, and the decode time they add.";
   return t;
 }
 
@@ -445,7 +488,9 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
                true,
                {},
                "The adaptive and context coders and lead-1 keep page random access; zstd and xz do not, except on "
-               "pieces of 2^16 samples (the data's by xz -9, the gradients' by zstd -19)."};
+               "pieces of 2^16 samples (the data's by xz -9, the gradients' by zstd -19). A volume that is its own "
+               "mirror image also has the mirrored context streams (reference/leb/FORMAT.md, 'Mirrored streams'), "
+               "gradients folded with the samples, which keep page random access too."};
   const std::vector<ChannelFigures> f = measureDataset(o, d);
   for (std::size_t i = 0; i < f[0].coders.size(); ++i) {
     StudyVariant v;
@@ -456,10 +501,18 @@ StudyGroup lebCoderStudyGroup(const BenchOptions& o, const LebDataset& d) {
                        std::to_string(kPieceSampleBits) + " samples each on its own";
     if (contextRow(i)) v.name += "; its gradients' pages beside";  // both channels, as every other variant
     v.error = 0.0;
-    const Timing& a = f[0].coders[i].decode;
-    const Timing& b = f[1].coders[i].decode;
-    v.time = Timing{a.median + b.median, a.min + b.min, a.max + b.max, std::min(a.runs, b.runs), false};
+    v.time = sumTiming(f[0].coders[i].decode, f[1].coders[i].decode);
     v.memoryBytes = f[0].coders[i].bytes + f[1].coders[i].bytes;
+    v.figures = {{"lossless", true}, {"ratio", (f[0].rawBytes + f[1].rawBytes) / v.memoryBytes}};
+    g.variants.push_back(v);
+  }
+  // The mirrored streams that store the gradients folded with the samples, whole.
+  for (const CoderFigure& whole : f[1].mirroredWhole) {
+    StudyVariant v;
+    v.name = whole.coder;
+    v.error = 0.0;
+    v.time = whole.decode;
+    v.memoryBytes = whole.bytes;
     v.figures = {{"lossless", true}, {"ratio", (f[0].rawBytes + f[1].rawBytes) / v.memoryBytes}};
     g.variants.push_back(v);
   }

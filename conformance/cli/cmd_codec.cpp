@@ -65,8 +65,8 @@ std::vector<Subcommand> addCodecCommands(CLI::App& app) {
   encodeCmd
       ->add_option("--mirror", encode->mirror,
                    "leb: off, or auto: find the planes the volume is its own mirror image across and store one side "
-                   "of each (a mirrored stream, reference/leb/FORMAT.md \"Mirrored streams\"; needs "
-                   "--derive-gradients or --no-gradients)")
+                   "of each (a mirrored stream, reference/leb/FORMAT.md \"Mirrored streams\"; stored gradients "
+                   "fold with it, a component negated across its plane)")
       ->default_val("off");
   encodeCmd->add_option("--bounds-out", encode->boundsOut,
                         "leb: also write the per-diamond min, max and error for isosurfaces (.vxlbb)");

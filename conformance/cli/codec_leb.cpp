@@ -98,13 +98,16 @@ void printInfo(const ref::MirroredLebStream& m, std::ostream& out) {
       << "exceptions      " << m.exceptions.size() << " mirrored points differ from their image: " << m.exceptionBytes
       << " bytes\n"
       << "gradients       "
-      << (h.derivedGradients ? "derived from the unfolded samples when decoded (central differences): none stored"
-                             : "none")
+      << (h.gradients == ref::LebMirrorGradients::Derived
+              ? "derived from the unfolded samples when decoded (central differences): none stored"
+          : h.storedGradients() ? "stored folded with the samples (a mirrored point's gradient is its image's with "
+                                  "the component across each of its planes negated; the others are exceptions)"
+                                : "none")
       << "\n"
       << "stream          " << m.streamBytes << " bytes, ratio "
-      << ratioText(static_cast<double>(points * static_cast<std::uint64_t>(h.sampleBits / 8)) /
+      << ratioText(static_cast<double>(points * (h.sampleBits / 8 + (h.storedGradients() ? 3u : 0u))) /
                    static_cast<double>(m.streamBytes))
-      << " (raw bytes of the volume over the stream)\n"
+      << " (raw bytes of the volume" << (h.storedGradients() ? " and its gradients" : "") << " over the stream)\n"
       << "the folded volume's stream, from byte " << m.innerOffset << ":\n";
   printInfo(m.inner, out);
 }
@@ -142,10 +145,6 @@ int encodeLebCommand(const EncodeOptions& o) {
     throw conf::UsageError("--coder must be lead1, adaptive or context, got " + o.lebCoder);
   if (o.mirror != "off" && o.mirror != "auto") throw conf::UsageError("--mirror must be off or auto, got " + o.mirror);
   const bool mirror = o.mirror == "auto";
-  if (mirror && ref::lebStoresGradients(options))
-    throw conf::UsageError(
-        "--mirror auto stores no gradients (a gradient's component across a mirror plane changes sign): give "
-        "--derive-gradients or --no-gradients");
   if (mirror && !o.boundsOut.empty())
     throw conf::UsageError("--mirror auto and --bounds-out: the diamond bounds are written for unfolded streams only");
   // What the encoder will allocate is known from the extents (the samples, and the padding that
@@ -161,8 +160,9 @@ int encodeLebCommand(const EncodeOptions& o) {
     // files are written together.
     need = bounds ? ref::lebEncodeMemoryBytes(dims, options) + 2 * ref::sampleCount(dims)  // + the volume at 16 bits
                   : io::lebFileEncodeAddressBytes(dims, *type, options);
-    if (mirror)
-      need += ref::sampleCount(dims) * (*type == io::VoxelType::UInt8 ? 1 : 2);  // the folded volume, at most this
+    if (mirror)  // the folded volume and its gradients, at most this
+      need += ref::sampleCount(dims) *
+              ((*type == io::VoxelType::UInt8 ? 1 : 2) + (ref::lebStoresGradients(options) ? 3 : 0));
   } catch (const std::invalid_argument& e) {
     throw conf::UsageError(e.what());
   }
@@ -182,20 +182,22 @@ int encodeLebCommand(const EncodeOptions& o) {
   const auto t0 = conf::Clock::now();
   if (!bounds) {
     try {
-      ref::LebMirrorPlanes planes;
-      if (mirror) {
-        planes = io::findLebMirrorPlanesInFile(o.inputs[0], dims, *type);
-        std::cout << "mirror planes   "
-                  << (planes.any() ? ref::lebMirrorPlanesText(planes)
-                                   : "none found (no axis on which the volume is its own mirror image in all but one "
-                                     "of 1024 points): the stream is not folded")
-                  << "\n";
-      }
       conf::Progress progress("voxref encode --codec leb", 1000);
-      io::encodeLebFile(
+      const io::LebFileRun run = io::encodeLebFile(
           o.inputs[0], dims, *type, o.out, options, io::kLebWindowBytes,
-          [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); }, planes);
+          [&](double done, std::string_view step) { progress.update(std::lround(1000 * done), step); }, {mirror, {}});
       progress.finish();
+      if (mirror)
+        std::cout << "mirror planes   "
+                  << (run.mirrorPlanes.any()
+                          ? ref::lebMirrorPlanesText(run.mirrorPlanes)
+                          : std::string("none found (no axis on which the volume is its own mirror image in all but "
+                                        "one of 1024 points") +
+                                (ref::lebStoresGradients(options)
+                                     ? ", and in its sample or gradient in all but one of 32"
+                                     : "") +
+                                "): the stream is not folded")
+                  << "\n";
     } catch (const std::invalid_argument& e) {
       throw conf::UsageError(e.what());
     } catch (const std::bad_alloc&) {
@@ -250,9 +252,9 @@ DecodePlan decodePlan(const std::filesystem::path& input, const ref::LebStream& 
 
 DecodePlan decodePlan(const std::filesystem::path& input, const ref::MirroredLebStream& s) {
   const std::uint64_t need = io::lebFileDecodeAddressBytes(s);
-  return {s.header.dims, s.header.sampleBits, s.header.derivedGradients, need,
+  return {s.header.dims, s.header.sampleBits, s.header.hasGradients(), need,
           input.string() + ": decoding needs " + std::to_string(need) + " bytes (" + dimsText(s.header.dims) +
-              " samples" + (s.header.derivedGradients ? " and their gradients" : "") +
+              " samples" + (s.header.hasGradients() ? " and their gradients" : "") +
               " mapped to files, the stream, its " + std::to_string(s.exceptions.size()) +
               " exceptions, and the padding points of the folded " + dimsText(s.inner.dims) +
               " volume's grid that predictions reach)"};

@@ -152,36 +152,12 @@ std::uint64_t lebFileEncodeAddressBytes(const ref::Dims3& dims, VoxelType type, 
 
 LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& dims, VoxelType type,
                          const std::filesystem::path& out, const ref::LebEncodeOptions& options, std::uint64_t budget,
-                         const LebProgress& progress, const ref::LebMirrorPlanes& mirror) {
+                         const LebProgress& progress, const LebFileMirror& mirror) {
   InputSamples in = inputSamples(input, dims, type);
   AtomicOutput output(out);
   const int bits = type == VoxelType::UInt8 ? 8 : 16;
+  ref::requireLebMirrorPlanes(dims, mirror.planes);
   LebFileRun run;
-  if (mirror.any()) {  // the folded volume into a scratch file, then its stream behind the mirror's header
-    ref::requireLebMirrorPlanes(dims, mirror);
-    const ref::Dims3 f = ref::lebFoldedDims(dims, mirror);
-    ScratchFile foldedFile(output, out, "folded");
-    MappedFile folded = MappedFile::create(foldedFile.path(), ref::sampleCount(f) * bytesPerSample(type), out);
-    ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, &folded}));
-    if (progress) progress(0, "folding");
-    const std::vector<ref::LebMirrorException> exceptions =
-        in.data8 ? ref::foldLebVolume(in.data8, dims, mirror, folded.data())
-                 : ref::foldLebVolume(in.data16, dims, mirror, bits, reinterpret_cast<std::uint16_t*>(folded.data()));
-    window();
-    ref::LebEncodeOptions o = options;
-    o.window = [&](double done) {
-      window();
-      if (progress) progress(done, "encoding the folded volume");
-    };
-    const ref::LebVolumeIn span{f, bits, in.data8 ? folded.data() : nullptr,
-                                in.data8 ? nullptr : reinterpret_cast<const std::uint16_t*>(folded.data()), nullptr};
-    run.streamBytes = writeStreamFile(output, out, [&](const ref::LebStreamWrite& write) {
-      return ref::encodeMirroredLebTo(span, {dims, bits, mirror, false}, exceptions, o, write);
-    });
-    run.trims = window.trims();
-    run.mirrorExceptions = exceptions.size();
-    return run;
-  }
   std::optional<ScratchFile> gradientsFile;
   std::optional<MappedFile> gradients;
   if (ref::lebStoresGradients(options)) {  // a stream that derives them needs none
@@ -192,30 +168,72 @@ LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& d
     // drop (adviseNoReadAround).
     gradients->adviseNoReadAround();
   }
-  ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, gradients ? &*gradients : nullptr}));
-  if (gradients) {
-    if (in.data8)
-      writeGradients(in.data8, dims, *gradients, options.threads, window, progress);
-    else
-      writeGradients(in.data16, dims, *gradients, options.threads, window, progress);
+  std::int8_t* g = gradients ? reinterpret_cast<std::int8_t*>(gradients->data()) : nullptr;
+  run.mirrorPlanes = mirror.planes;
+  {
+    ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, gradients ? &*gradients : nullptr}));
+    if (gradients) {
+      if (in.data8)
+        writeGradients(in.data8, dims, *gradients, options.threads, window, progress);
+      else
+        writeGradients(in.data16, dims, *gradients, options.threads, window, progress);
+    }
+    if (mirror.find) {  // with the gradients to be stored, since they are folded too
+      if (progress) progress(0, "finding mirror planes");
+      run.mirrorPlanes =
+          in.data8 ? ref::findLebMirrorPlanes(in.data8, g, dims) : ref::findLebMirrorPlanes(in.data16, g, dims);
+    }
+    run.trims += window.trims();
+  }
+  // The next window counts from what is resident when it opens: nothing of these, then.
+  if (in.mapped) in.mapped->trim();
+  if (gradients) gradients->trim();
+  // With mirror planes, the folded volume (and its gradients) into scratch files, then its stream
+  // behind the mirror's header.
+  const bool fold = run.mirrorPlanes.any();
+  const ref::Dims3 f = ref::lebFoldedDims(dims, run.mirrorPlanes);
+  std::optional<ScratchFile> foldedFile, foldedGradientsFile;
+  std::optional<MappedFile> folded, foldedGradients;
+  if (fold) {
+    foldedFile.emplace(output, out, "folded");
+    folded = MappedFile::create(foldedFile->path(), ref::sampleCount(f) * bytesPerSample(type), out);
+    if (gradients) {
+      foldedGradientsFile.emplace(output, out, "folded-gradients");
+      foldedGradients = MappedFile::create(foldedGradientsFile->path(), 3 * ref::sampleCount(f), out);
+    }
+  }
+  ResidentWindow window(budget, present({in.mapped ? &*in.mapped : nullptr, gradients ? &*gradients : nullptr,
+                                         folded ? &*folded : nullptr, foldedGradients ? &*foldedGradients : nullptr}));
+  std::vector<ref::LebMirrorException> exceptions;
+  if (fold) {
+    if (progress) progress(0, "folding");
+    auto* fg = foldedGradients ? reinterpret_cast<std::int8_t*>(foldedGradients->data()) : nullptr;
+    exceptions = in.data8 ? ref::foldLebVolume(in.data8, g, dims, run.mirrorPlanes, folded->data(), fg)
+                          : ref::foldLebVolume(in.data16, g, dims, run.mirrorPlanes, bits,
+                                               reinterpret_cast<std::uint16_t*>(folded->data()), fg);
+    window();
+    run.mirrorExceptions = exceptions.size();
   }
   ref::LebEncodeOptions o = options;
   o.window = [&](double done) {
     window();
-    if (progress) progress(done, "encoding");
+    if (progress) progress(done, fold ? "encoding the folded volume" : "encoding");
   };
-  const ref::LebVolumeIn span{dims, bits, in.data8, in.data16,
-                              gradients ? reinterpret_cast<const std::int8_t*>(gradients->data()) : nullptr};
-  run.streamBytes =
-      writeStreamFile(output, out, [&](const ref::LebStreamWrite& write) { return ref::encodeLebTo(span, o, write); });
-  run.trims = window.trims();
+  const std::uint8_t* data8 = !in.data8 ? nullptr : fold ? folded->data() : in.data8;
+  const std::uint16_t* data16 = !in.data16 ? nullptr
+                                : fold     ? reinterpret_cast<const std::uint16_t*>(folded->data())
+                                           : in.data16;
+  const std::int8_t* spanGradients = !fold             ? g
+                                     : foldedGradients ? reinterpret_cast<const std::int8_t*>(foldedGradients->data())
+                                                       : nullptr;
+  const ref::LebVolumeIn span{f, bits, data8, data16, spanGradients};
+  run.streamBytes = writeStreamFile(output, out, [&](const ref::LebStreamWrite& write) {
+    return fold ? ref::encodeMirroredLebTo(span, {dims, bits, run.mirrorPlanes, ref::LebMirrorGradients::None},
+                                           exceptions, o, write)
+                : ref::encodeLebTo(span, o, write);
+  });
+  run.trims += window.trims();
   return run;
-}
-
-ref::LebMirrorPlanes findLebMirrorPlanesInFile(const std::filesystem::path& input, const ref::Dims3& dims,
-                                               VoxelType type) {
-  const InputSamples in = inputSamples(input, dims, type);
-  return in.data8 ? ref::findLebMirrorPlanes(in.data8, dims) : ref::findLebMirrorPlanes(in.data16, dims);
 }
 
 std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
@@ -227,7 +245,7 @@ std::uint64_t lebFileDecodeAddressBytes(const ref::LebStream& s) {
 std::uint64_t lebFileDecodeAddressBytes(const ref::MirroredLebStream& s) {
   const std::uint64_t samples = ref::sampleCount(s.header.dims);
   return s.streamBytes + samples * static_cast<std::uint64_t>(s.header.sampleBits / 8) +
-         (s.header.derivedGradients ? 3 * samples : 0) + ref::lebDecodeShellBytes(s.inner) +
+         (s.header.hasGradients() ? 3 * samples : 0) + ref::lebDecodeShellBytes(s.inner) +
          s.exceptions.size() * sizeof(ref::LebMirrorException);
 }
 
@@ -311,11 +329,11 @@ LebFileRun decodeLebFile(const MirroredLebFile& input, const std::filesystem::pa
                          const std::filesystem::path& gradientsOut, int threads, std::uint64_t budget,
                          const LebProgress& progress) {
   const ref::MirroredLebStream& s = input.stream;
-  return decodeToFiles({*input.file, s.header.dims, s.header.sampleBits, s.header.derivedGradients, false}, out,
-                       gradientsOut, budget, progress,
-                       [&](const ref::LebVolumeOut& span, const ref::LebWindow& window) {
-                         ref::decodeMirroredLebInto(s, span, threads, window);
-                       });
+  return decodeToFiles(
+      {*input.file, s.header.dims, s.header.sampleBits, s.header.hasGradients(), s.header.storedGradients()}, out,
+      gradientsOut, budget, progress, [&](const ref::LebVolumeOut& span, const ref::LebWindow& window) {
+        ref::decodeMirroredLebInto(s, span, threads, window);
+      });
 }
 
 }  // namespace voxref::io

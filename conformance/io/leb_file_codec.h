@@ -26,9 +26,18 @@ inline constexpr std::uint64_t kLebWindowBytes = std::uint64_t{512} << 20;
 using LebProgress = std::function<void(double done, std::string_view step)>;
 
 struct LebFileRun {
-  std::uint64_t streamBytes = 0;       // of the stream written (encode) or read (decode)
-  int trims = 0;                       // how often the window trimmed the mappings
-  std::uint64_t mirrorExceptions = 0;  // encode with mirror planes: the points that differ from their image
+  std::uint64_t streamBytes = 0;        // of the stream written (encode) or read (decode)
+  int trims = 0;                        // how often the window trimmed the mappings
+  ref::LebMirrorPlanes mirrorPlanes{};  // encode: the planes the volume was folded across (none: not folded)
+  std::uint64_t mirrorExceptions = 0;   // encode with mirror planes: the points that differ from their image
+};
+
+// How encodeLebFile folds the volume (reference/leb/mirror_fold.h): across `planes` (none: not at
+// all), or with `find` across those ref::findLebMirrorPlanes finds, with the gradients when they
+// are stored (they are folded too).
+struct LebFileMirror {
+  bool find = false;
+  ref::LebMirrorPlanes planes;
 };
 
 // Encodes the raw volume `input` (x fastest, uint8 or uint16 little endian; a ".gz" input is
@@ -36,17 +45,14 @@ struct LebFileRun {
 // The gradients (quantizedGradients, made slice by slice) go to a temporary file beside `out`,
 // removed afterwards. Throws IoError naming the file (missing, wrong size, disk full: "cannot
 // write <out>: <reason>", and nothing is left at `out`), std::invalid_argument as encodeLeb.
-// With `mirror` planes the stream is a mirrored one (reference/leb/mirror_stream.h): the folded
-// volume goes to a temporary file beside `out` (foldLebVolume, one pass), and is encoded from
-// there; std::invalid_argument then also as encodeMirroredLebTo and foldLebVolume (gradients to
-// store, too many exceptions).
+// With mirror planes (given or found) the stream is a mirrored one (reference/leb/mirror_stream.h):
+// the folded volume, and its gradients when stored, go to temporary files beside `out`
+// (foldLebVolume, one pass), and are encoded from there; std::invalid_argument then also as
+// encodeMirroredLebTo and foldLebVolume (too many exceptions).
 LebFileRun encodeLebFile(const std::filesystem::path& input, const ref::Dims3& dims, VoxelType type,
                          const std::filesystem::path& out, const ref::LebEncodeOptions& options,
                          std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {},
-                         const ref::LebMirrorPlanes& mirror = {});
-// The mirror planes of the raw volume `input` (ref::findLebMirrorPlanes over its mapped samples).
-ref::LebMirrorPlanes findLebMirrorPlanesInFile(const std::filesystem::path& input, const ref::Dims3& dims,
-                                               VoxelType type);
+                         const LebFileMirror& mirror = {});
 // The address space encodeLebFile maps and allocates, from the extents (for a refusal under
 // ulimit -v before anything is read): the volume and its gradients mapped, and what the encoder
 // allocates (ref::lebEncodeToMemoryBytes).
@@ -62,7 +68,8 @@ LebFileRun decodeLebFile(const LebFile& input, const std::filesystem::path& out,
                          const std::filesystem::path& gradientsOut, int threads = 0,
                          std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});
 // The same for a mirrored stream: the folded volume is decoded into the start of the samples'
-// file and unfolded in place (ref::decodeMirroredLebInto); its gradients are derived or none.
+// file (its gradients, when stored, into the start of theirs) and unfolded in place
+// (ref::decodeMirroredLebInto); derived gradients are computed after.
 LebFileRun decodeLebFile(const MirroredLebFile& input, const std::filesystem::path& out,
                          const std::filesystem::path& gradientsOut, int threads = 0,
                          std::uint64_t window = kLebWindowBytes, const LebProgress& progress = {});

@@ -4,7 +4,8 @@
 // exceptions). One page chain a point, as in the folded stream: the mirror costs a table lookup.
 //
 // Bit-identical to decodeMirroredLeb. Only points inside the volume are answered: the folded
-// stream's padding belongs to its own grid, not to the volume's. Memory: the LebReader's (its cache
+// stream's padding belongs to its own grid, not to the volume's. A stored gradient reads its
+// image's from the folded stream and mirrors it. Memory: the LebReader's (its cache
 // budget and memo). Errors: std::invalid_argument for a point outside the volume, or a gradient of a
 // stream that has none; StreamError (offsets in the folded stream) for a corrupt page. Not
 // thread-safe: one reader per thread (they can share the stream).
@@ -26,13 +27,19 @@ class MirroredLebReader {
   const MirroredLebStream& stream() const { return *stream_; }
   // The sample at p, a point of the volume.
   std::uint16_t sample(const GridPoint& p);
-  // The gradient at p of a stream that derives its gradients: quantizedGradients' central
-  // differences (gradients.h) of the samples this reader gives.
+  // The gradient at p: a stored one is its image's, mirrored, plus its exception's residuals; a
+  // derived one quantizedGradients' central differences (gradients.h) of the samples this reader
+  // gives.
   std::array<std::int8_t, 3> gradient(const GridPoint& p);
   // The reader of the folded stream (its cache's statistics).
   const LebReader& folded() const { return folded_; }
 
  private:
+  // p's exception (a binary search of the stream's), or null; throws for a point outside the volume.
+  const LebMirrorException* exceptionAt(const GridPoint& p) const;
+  // Where p's image lies in the folded stream.
+  GridPoint foldedPoint(const GridPoint& p) const;
+
   std::shared_ptr<const MirroredLebStream> stream_;
   LebReader folded_;
 };

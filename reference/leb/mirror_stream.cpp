@@ -19,24 +19,45 @@ constexpr char kMagic[4] = {'V', 'X', 'L', 'M'};
 constexpr std::size_t kExceptionsCrcAt = 68, kHeaderCrcAt = 72;
 
 // The models of the exceptions' decisions (FORMAT.md, "Mirrored streams", the exceptions): the
-// width of each gap down a tree of six levels, and the residual as the adaptive coder's decisions
-// in one context.
+// width of each gap down a tree of six levels, the residual as the adaptive coder's decisions in
+// one context, and the gradient's residuals (stored gradients) in one context a component.
 struct ExceptionModels {
   std::array<BitModel, 64> width{};  // nodes 1..63
-  DeltaDecisionModels residual;
-  explicit ExceptionModels(int sampleBits) : residual(sampleBits, 1, 1) {}
+  DeltaDecisionModels residual, gradient;
+  explicit ExceptionModels(int sampleBits) : residual(sampleBits, 1, 1), gradient(8, 3, 3) {}
 };
+
+// A residual of `bits` bits (modulo 2^bits) as the signed value the decisions code, and back.
+struct SignedResidual {
+  int symbol = 0, negative = 0;
+  std::uint32_t magnitude = 0;
+};
+SignedResidual signedResidual(std::uint32_t r, int bits) {
+  const std::uint32_t half = 1u << (bits - 1);
+  const std::int64_t d = r >= half ? std::int64_t{r} - 2 * std::int64_t{half} : r;
+  const auto magnitude = static_cast<std::uint32_t>(d < 0 ? -d : d);
+  return {static_cast<int>(std::bit_width(magnitude)), d < 0 ? 1 : 0, magnitude};
+}
+std::int64_t signedValue(const SignedResidual& v) {
+  return v.negative ? -std::int64_t{v.magnitude} : std::int64_t{v.magnitude};
+}
 
 // One exception's decisions, for the encoder and the decoder alike: g = gap + 1 (>= 1; the gap is
 // the points skipped since the previous exception, or since the volume's first point) by its bit
-// width down the tree of six levels (codeByBitWidth); then the residual as a signed value (delta_decisions.h). Returns
-// g and sets the residual's symbol, sign and magnitude (decoding), or codes those given (encoding).
+// width down the tree of six levels (codeByBitWidth); then the residual as a signed value
+// (delta_decisions.h); then, with stored gradients, each component's residual the same way. Returns
+// g and sets the residuals (decoding), or codes those given (encoding).
 template <class Bits>
-std::uint64_t codeException(Bits bits, ExceptionModels& m, std::uint64_t g, int& symbol, int& negative,
-                            std::uint32_t& magnitude) {
+std::uint64_t codeException(Bits bits, ExceptionModels& m, bool gradients, std::uint64_t g, SignedResidual& residual,
+                            std::array<SignedResidual, 3>& gradient) {
   const std::uint64_t v = codeByBitWidth(
       bits, [&](int node) -> BitModel& { return m.width[static_cast<std::size_t>(node)]; }, 6, g);
-  symbol = codeDeltaDecisions(bits, m.residual, 0, 0, symbol, negative, magnitude);
+  residual.symbol = codeDeltaDecisions(bits, m.residual, 0, 0, residual.symbol, residual.negative, residual.magnitude);
+  if (gradients)
+    for (int c = 0; c < 3; ++c) {
+      SignedResidual& r = gradient[static_cast<std::size_t>(c)];
+      r.symbol = codeDeltaDecisions(bits, m.gradient, c, c, r.symbol, r.negative, r.magnitude);
+    }
   return v;
 }
 
@@ -54,8 +75,13 @@ std::string exceptionFault(const LebMirrorHeader& h, std::uint64_t after, const 
       !lebMirroredCoordinate(static_cast<int>(z), h.planes.sum[2]))
     return "point (" + std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z) +
            ") is kept, not mirrored: it has no image to differ from";
-  if (e.residual == 0 || e.residual >= (1u << h.sampleBits))
-    return "residual " + std::to_string(e.residual) + " is not in 1.." + std::to_string((1u << h.sampleBits) - 1);
+  if (e.residual >= (1u << h.sampleBits))
+    return "residual " + std::to_string(e.residual) + " is not in 0.." + std::to_string((1u << h.sampleBits) - 1);
+  if (!h.storedGradients() && e.gradient != std::array<std::uint8_t, 3>{})
+    return "a gradient residual in a stream that stores no gradients";
+  if (e.residual == 0 && e.gradient == std::array<std::uint8_t, 3>{})
+    return h.storedGradients() ? "its sample and gradient equal their image's: it is no exception"
+                               : "residual 0: its sample equals its image's, it is no exception";
   return {};
 }
 
@@ -64,16 +90,13 @@ std::string exceptionBytes(const LebMirrorHeader& h, const std::vector<LebMirror
   RangeEncoder enc;
   ExceptionModels m(h.sampleBits);
   std::uint64_t after = 0;
-  const std::uint32_t half = 1u << (h.sampleBits - 1);
   for (const LebMirrorException& e : exceptions) {
     if (const std::string fault = exceptionFault(h, after, e); !fault.empty())
       throw std::invalid_argument("mirror exception: " + fault);
-    // The residual as a signed value of sampleBits bits.
-    const std::int64_t d = e.residual >= half ? std::int64_t{e.residual} - 2 * std::int64_t{half} : e.residual;
-    int negative = d < 0 ? 1 : 0;
-    std::uint32_t magnitude = static_cast<std::uint32_t>(d < 0 ? -d : d);
-    int symbol = static_cast<int>(std::bit_width(magnitude));
-    codeException(EncodeBits{enc}, m, e.index - after + 1, symbol, negative, magnitude);
+    SignedResidual residual = signedResidual(e.residual, h.sampleBits);
+    std::array<SignedResidual, 3> gradient;
+    for (int c = 0; c < 3; ++c) gradient[c] = signedResidual(e.gradient[c], 8);
+    codeException(EncodeBits{enc}, m, h.storedGradients(), e.index - after + 1, residual, gradient);
     after = e.index + 1;
   }
   return enc.finish();
@@ -90,21 +113,28 @@ std::vector<LebMirrorException> decodeExceptions(const LebMirrorHeader& h, std::
   const std::int64_t half = std::int64_t{1} << (h.sampleBits - 1);
   std::uint64_t after = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
-    int symbol = 0, negative = 0;
-    std::uint32_t magnitude = 0;
-    const std::uint64_t g = codeException(DecodeBits{dec}, m, 0, symbol, negative, magnitude);
+    SignedResidual residual;
+    std::array<SignedResidual, 3> gradient;
+    const std::uint64_t g = codeException(DecodeBits{dec}, m, h.storedGradients(), 0, residual, gradient);
     if (dec.overrun())
       ByteReader::fail(at, "exceptions: the " + std::to_string(bytes.size()) + " bytes end inside exception " +
                                std::to_string(i) + " of " + std::to_string(count));
     if (g - 1 >= points - after)
       ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + " lies past the volume's " +
                                std::to_string(points) + " points");
-    const std::int64_t d = negative ? -std::int64_t{magnitude} : std::int64_t{magnitude};
-    if (symbol == 0 || d < -half || d >= half)
+    const std::int64_t d = signedValue(residual);
+    if (d < -half || d >= half)
       ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + " has residual " + std::to_string(d) +
-                               ", expected a non-zero value in " + std::to_string(-half) + ".." +
-                               std::to_string(half - 1));
-    const LebMirrorException e{after + g - 1, static_cast<std::uint32_t>(d & (2 * half - 1))};
+                               ", expected a value in " + std::to_string(-half) + ".." + std::to_string(half - 1));
+    LebMirrorException e{after + g - 1, static_cast<std::uint32_t>(d & (2 * half - 1)), {}};
+    for (int c = 0; c < 3; ++c) {
+      const std::int64_t dc = signedValue(gradient[c]);
+      if (dc < -128 || dc > 127)
+        ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + " has gradient residual " +
+                                 std::to_string(dc) + " in component " + std::to_string(c) +
+                                 ", expected a value in -128..127");
+      e.gradient[c] = static_cast<std::uint8_t>(dc & 255);
+    }
     if (const std::string fault = exceptionFault(h, after, e); !fault.empty())
       ByteReader::fail(at, "exceptions: exception " + std::to_string(i) + ": " + fault);
     out.push_back(e);
@@ -122,7 +152,7 @@ std::string headerBytes(const LebMirrorHeader& h, std::uint64_t exceptionCount, 
   w.bytes(kMagic, 4);
   w.le<std::uint16_t>(kLebMirrorVersion);
   w.le<std::uint8_t>(static_cast<std::uint8_t>(h.sampleBits));
-  w.le<std::uint8_t>(h.derivedGradients ? 1 : 0);
+  w.le<std::uint8_t>(static_cast<std::uint8_t>(h.gradients));
   for (int a = 0; a < 3; ++a) w.le<std::uint32_t>(static_cast<std::uint32_t>(h.dims[a]));
   for (int a = 0; a < 3; ++a) w.le<std::uint64_t>(static_cast<std::uint64_t>(h.planes.sum[a]));
   w.le<std::uint64_t>(exceptionCount);
@@ -148,25 +178,27 @@ bool isMirroredLebStream(std::string_view bytes) { return bytes.substr(0, 4) == 
 std::uint64_t encodeMirroredLebTo(const LebVolumeIn& folded, const LebMirrorHeader& h,
                                   const std::vector<LebMirrorException>& exceptions, const LebEncodeOptions& options,
                                   const LebStreamWrite& write) {
-  if (lebStoresGradients(options))
-    throw std::invalid_argument(
-        "a mirrored stream stores no gradients (a gradient's component across a mirror plane changes sign): derive "
-        "them from the samples or leave them out");
   if (!h.planes.any()) throw std::invalid_argument("a mirrored stream folds at least one axis: no mirror plane given");
   requireLebMirrorPlanes(h.dims, h.planes);
   if (folded.dims != lebFoldedDims(h.dims, h.planes) || folded.sampleBits != h.sampleBits)
     throw std::invalid_argument("the folded volume is " + dimsText(folded.dims) + ", expected " +
                                 dimsText(lebFoldedDims(h.dims, h.planes)));
-  if (exceptions.size() > lebMirroredPoints(h.dims, h.planes) / kLebMirrorExceptionShare)
-    throw std::invalid_argument("more exceptions than one in " + std::to_string(kLebMirrorExceptionShare) +
-                                " mirrored points");
   LebMirrorHeader header = h;
-  header.derivedGradients = options.gradients && options.deriveGradients;
+  header.gradients = !options.gradients            ? LebMirrorGradients::None
+                     : lebStoresGradients(options) ? LebMirrorGradients::Stored
+                                                   : LebMirrorGradients::Derived;
+  if (header.storedGradients() && folded.gradients == nullptr)
+    throw std::invalid_argument("a mirrored stream that stores its gradients needs the folded volume's gradients");
+  if (exceptions.size() > lebMirrorExceptionCap(h.dims, h.planes, header.storedGradients()))
+    throw std::invalid_argument(
+        "more exceptions than one in " +
+        std::to_string(header.storedGradients() ? kLebMirrorGradientExceptionShare : kLebMirrorExceptionShare) +
+        " mirrored points");
   const std::string coded = exceptionBytes(header, exceptions);
   const std::uint64_t base = kLebMirrorHeaderBytes + coded.size();
   write(kLebMirrorHeaderBytes, coded);
-  LebEncodeOptions inner = options;
-  inner.gradients = false;
+  LebEncodeOptions inner = options;  // derived gradients are the unfolded volume's: the folded stream has none
+  inner.gradients = header.storedGradients();
   inner.deriveGradients = false;
   const std::uint64_t total = base + encodeLebTo(folded, inner, [&](std::uint64_t offset, std::string_view bytes) {
                                 write(base + offset, bytes);
@@ -176,16 +208,25 @@ std::uint64_t encodeMirroredLebTo(const LebVolumeIn& folded, const LebMirrorHead
 }
 
 std::string encodeMirroredLeb(const Volume<std::uint16_t>& volume, int sampleBits, const LebMirrorPlanes& planes,
-                              const LebEncodeOptions& options) {
+                              const LebEncodeOptions& options, const std::vector<std::int8_t>& gradients) {
   if (sampleBits != 8 && sampleBits != 16) throw std::invalid_argument("sample bits must be 8 or 16");
   const Dims3 d = volume.dims();
   requireLebMirrorPlanes(d, planes);
+  const bool stored = lebStoresGradients(options);
+  if (stored && !gradients.empty() && gradients.size() != 3 * sampleCount(d))
+    throw std::invalid_argument("encodeMirroredLeb: " + std::to_string(gradients.size()) + " gradient components for " +
+                                std::to_string(sampleCount(d)) + " samples");
+  const std::vector<std::int8_t> own =
+      stored && gradients.empty() ? quantizedGradients(volume) : std::vector<std::int8_t>{};
+  const std::int8_t* g = !stored ? nullptr : gradients.empty() ? own.data() : gradients.data();
   Volume<std::uint16_t> folded(lebFoldedDims(d, planes));
-  const std::vector<LebMirrorException> exceptions =
-      foldLebVolume(volume.data().data(), d, planes, sampleBits, folded.data().data());
-  const LebVolumeIn span{folded.dims(), sampleBits, nullptr, folded.data().data(), nullptr};
+  std::vector<std::int8_t> foldedGradients(g ? 3 * sampleCount(folded.dims()) : 0);
+  const std::vector<LebMirrorException> exceptions = foldLebVolume(
+      volume.data().data(), g, d, planes, sampleBits, folded.data().data(), g ? foldedGradients.data() : nullptr);
+  const LebVolumeIn span{folded.dims(), sampleBits, nullptr, folded.data().data(),
+                         g ? foldedGradients.data() : nullptr};
   std::string out;
-  encodeMirroredLebTo(span, {d, sampleBits, planes, false}, exceptions, options,
+  encodeMirroredLebTo(span, {d, sampleBits, planes, LebMirrorGradients::None}, exceptions, options,
                       [&](std::uint64_t offset, std::string_view bytes) {
                         if (out.size() < offset + bytes.size()) out.resize(offset + bytes.size());
                         out.replace(offset, bytes.size(), bytes);
@@ -213,7 +254,7 @@ MirroredLebStream parseMirroredLebStream(std::string_view b, std::shared_ptr<con
   h.sampleBits = r.le<std::uint8_t>("sample_bits");
   if (h.sampleBits != 8 && h.sampleBits != 16)
     r.fail(bitsAt, "sample_bits: expected 8 or 16, got " + std::to_string(h.sampleBits));
-  h.derivedGradients = r.le<std::uint8_t>("gradients", 0, 1) == 1;
+  h.gradients = static_cast<LebMirrorGradients>(r.le<std::uint8_t>("gradients", 0, 2));
   const auto maxExtent = static_cast<std::uint64_t>(LebGrid{kMaxLebK}.pointsPerAxis());
   for (int a = 0; a < 3; ++a) h.dims[a] = static_cast<int>(r.le<std::uint32_t>("extent", 1, maxExtent));
   for (int a = 0; a < 3; ++a) {
@@ -225,7 +266,7 @@ MirroredLebStream parseMirroredLebStream(std::string_view b, std::shared_ptr<con
                      std::to_string(h.dims[a]) + ", got " + std::to_string(h.planes.sum[a]));
   }
   if (!h.planes.any()) r.fail(20, "mirror_sum: no axis is mirrored (a mirrored stream folds one at least)");
-  const std::uint64_t cap = lebMirroredPoints(h.dims, h.planes) / kLebMirrorExceptionShare;
+  const std::uint64_t cap = lebMirrorExceptionCap(h.dims, h.planes, h.storedGradients());
   const std::uint64_t count = r.le<std::uint64_t>("exception_count", 0, cap);
   const std::size_t exceptionBytesAt = r.offset();
   m.exceptionBytes = r.le<std::uint64_t>("exceptions_bytes");
@@ -252,30 +293,37 @@ MirroredLebStream parseMirroredLebStream(std::string_view b, std::shared_ptr<con
     r.fail(m.innerOffset, "folded stream: its volume is " + dimsText(m.inner.dims) + " uint" +
                               std::to_string(m.inner.sampleBits) + ", expected the folded " + dimsText(folded) +
                               " uint" + std::to_string(h.sampleBits));
-  if (m.inner.channels.size() != 1 || m.inner.derivedGradients)
-    r.fail(m.innerOffset, "folded stream: expected the data channel alone (the gradients are never folded)");
+  if (m.inner.derivedGradients || m.inner.channels.size() != (h.storedGradients() ? 2u : 1u))
+    r.fail(m.innerOffset, h.storedGradients()
+                              ? "folded stream: expected the data and the gradients channels (header byte 7 says the "
+                                "gradients are stored)"
+                              : "folded stream: expected the data channel alone (header byte 7 says the gradients are "
+                                "none or derived from the unfolded samples)");
   return m;
 }
 
 void decodeMirroredLebInto(const MirroredLebStream& m, const LebVolumeOut& out, int threads, const LebWindow& window) {
   const LebMirrorHeader& h = m.header;
-  if (out.dims != h.dims || out.sampleBits != h.sampleBits || (out.gradients && !h.derivedGradients) ||
-      (out.data8 == nullptr) == (out.data16 == nullptr) || (out.data8 && h.sampleBits != 8))
+  if (out.dims != h.dims || out.sampleBits != h.sampleBits || (out.gradients && !h.hasGradients()) ||
+      (!out.gradients && h.storedGradients()) || (out.data8 == nullptr) == (out.data16 == nullptr) ||
+      (out.data8 && h.sampleBits != 8))
     throw std::invalid_argument("decodeMirroredLebInto: the output is not the stream's volume (" + dimsText(h.dims) +
                                 " uint" + std::to_string(h.sampleBits) + ")");
-  const LebVolumeOut folded{lebFoldedDims(h.dims, h.planes), h.sampleBits, out.data8, out.data16, nullptr};
-  const bool gradients = out.gradients != nullptr;
+  // Stored gradients are decoded and unfolded with the samples; derived ones follow them.
+  const bool derive = out.gradients != nullptr && !h.storedGradients();
+  const LebVolumeOut folded{lebFoldedDims(h.dims, h.planes), h.sampleBits, out.data8, out.data16,
+                            h.storedGradients() ? out.gradients : nullptr};
   try {
-    decodeLebInto(m.inner, folded, threads, lebProgressPart(window, 0, gradients ? 0.6 : 0.8));
+    decodeLebInto(m.inner, folded, threads, lebProgressPart(window, 0, derive ? 0.6 : 0.8));
   } catch (const StreamError& e) {
     throw inWholeStream(e, m.innerOffset);
   }
-  const LebWindow unfoldWindow = lebProgressPart(window, gradients ? 0.6 : 0.8, gradients ? 0.1 : 0.2);
+  const LebWindow unfoldWindow = lebProgressPart(window, derive ? 0.6 : 0.8, derive ? 0.1 : 0.2);
   if (out.data8)
-    unfoldLebVolume(out.data8, h.dims, h.planes, m.exceptions, unfoldWindow);
+    unfoldLebVolume(out.data8, folded.gradients, h.dims, h.planes, m.exceptions, unfoldWindow);
   else
-    unfoldLebVolume(out.data16, h.dims, h.planes, h.sampleBits, m.exceptions, unfoldWindow);
-  if (gradients)
+    unfoldLebVolume(out.data16, folded.gradients, h.dims, h.planes, h.sampleBits, m.exceptions, unfoldWindow);
+  if (derive)
     withLebSamples(out, [&](const auto* samples) {
       quantizedGradientsInto(samples, h.dims, out.gradients, threads, lebProgressPart(window, 0.7, 0.3));
     });
@@ -283,17 +331,17 @@ void decodeMirroredLebInto(const MirroredLebStream& m, const LebVolumeOut& out, 
 
 LebDecoded decodeMirroredLeb(const MirroredLebStream& m, int threads) {
   LebDecoded d{Volume<std::uint16_t>(m.header.dims), {}};
-  if (m.header.derivedGradients) d.gradients.resize(3 * sampleCount(m.header.dims));
+  if (m.header.hasGradients()) d.gradients.resize(3 * sampleCount(m.header.dims));
   decodeMirroredLebInto(m,
                         {m.header.dims, m.header.sampleBits, nullptr, d.data.data().data(),
-                         m.header.derivedGradients ? d.gradients.data() : nullptr},
+                         m.header.hasGradients() ? d.gradients.data() : nullptr},
                         threads);
   return d;
 }
 
 std::uint64_t mirroredLebDecodeMemoryBytes(const MirroredLebStream& m) {
   const std::uint64_t samples = sampleCount(m.header.dims);
-  return (m.header.derivedGradients ? 5 : 2) * samples + lebDecodeShellBytes(m.inner);
+  return (m.header.hasGradients() ? 5 : 2) * samples + lebDecodeShellBytes(m.inner);
 }
 
 }  // namespace voxref::ref

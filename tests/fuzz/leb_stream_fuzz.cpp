@@ -38,7 +38,7 @@ int mirrored(const std::string& bytes) {
        {GridPoint{0, 0, 0}, GridPoint{d[0] / 2, d[1] / 2, d[2] / 2}, GridPoint{d[0] - 1, d[1] - 1, d[2] - 1}}) {
     try {
       (void)reader.sample(p);
-      if (s->header.derivedGradients) (void)reader.gradient(p);
+      if (s->header.hasGradients()) (void)reader.gradient(p);
     } catch (const StreamError&) {
     }
   }

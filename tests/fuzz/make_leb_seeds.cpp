@@ -7,7 +7,9 @@
 #include <fstream>
 #include <iostream>
 #include <random>
+#include <vector>
 
+#include "reference/leb/gradients.h"
 #include "reference/leb/leb_codec.h"
 #include "reference/leb/mirror_stream.h"
 
@@ -53,9 +55,10 @@ int main(int argc, char** argv) {
   write("context_smooth_gradients.vxleb", smooth, 8, 4, true, LebCoder::Context);  // "Context gradient pages"
   write("context_noise_gradients.vxleb", noise, 8, 6, true, LebCoder::Context);
   // Mirrored: the smooth volume made its own mirror image in x (sum 8) and z (sum 3), with one
-  // point off its image; the wide one in y (sum 4).
+  // point off its image; the wide one in y (sum 4); noise across the centre of x (sum 31) with its
+  // gradients derived, and stored with one more point off its mirrored gradient.
   auto writeMirrored = [&](const std::string& name, Volume<std::uint16_t> v, int bits, const LebMirrorPlanes& planes,
-                           LebCoder coder, bool derive, bool exception) {
+                           LebCoder coder, LebMirrorGradients gradients, bool exception) {
     const Dims3 d = v.dims();
     for (int z = 0; z < d[2]; ++z)
       for (int y = 0; y < d[1]; ++y)
@@ -66,15 +69,23 @@ int main(int argc, char** argv) {
     LebEncodeOptions o;
     o.pageBits = 4;
     o.coder = coder;
-    o.gradients = derive;
-    o.deriveGradients = derive;
-    std::ofstream(dir / name, std::ios::binary) << encodeMirroredLeb(v, bits, planes, o);
+    o.gradients = gradients != LebMirrorGradients::None;
+    o.deriveGradients = gradients == LebMirrorGradients::Derived;
+    std::vector<std::int8_t> g;
+    if (gradients == LebMirrorGradients::Stored) {
+      g = quantizedGradients(v);
+      g[3 * v.index(d[0] - 1, 1, 1) + 2] ^= 1;
+    }
+    std::ofstream(dir / name, std::ios::binary) << encodeMirroredLeb(v, bits, planes, o, g);
   };
   Volume<std::uint16_t> big({32, 7, 5});  // 2^8 mirrored points at least, so one exception fits
   for (auto& s : big.data()) s = static_cast<std::uint16_t>(rng() & 255);
-  writeMirrored("mirrored_lead1.vxleb", smooth, 8, {{8, kNoLebMirror, 3}}, LebCoder::Lead1, false, false);
-  writeMirrored("mirrored_context_exception.vxleb", big, 8, {{31, kNoLebMirror, 3}}, LebCoder::Context, true, true);
-  writeMirrored("mirrored_adaptive_wide16.vxleb", wide, 16, {{kNoLebMirror, 4, kNoLebMirror}}, LebCoder::Adaptive, true,
-                false);
+  using enum LebMirrorGradients;
+  writeMirrored("mirrored_lead1.vxleb", smooth, 8, {{8, kNoLebMirror, 3}}, LebCoder::Lead1, None, false);
+  writeMirrored("mirrored_context_exception.vxleb", big, 8, {{31, kNoLebMirror, 3}}, LebCoder::Context, Derived, true);
+  writeMirrored("mirrored_adaptive_wide16.vxleb", wide, 16, {{kNoLebMirror, 4, kNoLebMirror}}, LebCoder::Adaptive,
+                Derived, false);
+  writeMirrored("mirrored_context_stored.vxleb", big, 8, {{31, kNoLebMirror, kNoLebMirror}}, LebCoder::Context, Stored,
+                true);
   return 0;
 }

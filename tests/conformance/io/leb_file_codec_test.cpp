@@ -80,7 +80,8 @@ TEST_P(LebFileCodec, EncodesTheStreamEncodeLebMakesAndDecodesItBack) {
 }
 
 // A mirrored stream (reference/leb/mirror_stream.h) between files: the stream encodeMirroredLeb
-// makes in memory, under any window, decoded back in place with its derived gradients.
+// makes in memory across the planes findLebMirrorPlanes finds, under any window, decoded back in
+// place with its derived or stored gradients.
 TEST(LebFileCodecMirrored, EncodesTheStreamEncodeMirroredLebMakesAndDecodesItBack) {
   struct Mirrored {
     ref::Dims3 dims;
@@ -89,7 +90,7 @@ TEST(LebFileCodecMirrored, EncodesTheStreamEncodeMirroredLebMakesAndDecodesItBac
     ref::Dims3 off;  // a mirrored point, moved off its image
   };
   for (const Mirrored& c : {Mirrored{{37, 21, 13}, 8, {{36, ref::kNoLebMirror, 11}}, {36, 20, 12}},
-                            Mirrored{{20, 9, 17}, 16, {{ref::kNoLebMirror, 7, ref::kNoLebMirror}}, {19, 7, 16}}}) {
+                            Mirrored{{20, 9, 17}, 16, {{ref::kNoLebMirror, 8, ref::kNoLebMirror}}, {19, 7, 16}}}) {
     const std::string name = ref::dimsText(c.dims) + "_" + std::to_string(c.bits);
     SCOPED_TRACE(name);
     const test::ScratchFolder dir;
@@ -109,21 +110,38 @@ TEST(LebFileCodecMirrored, EncodesTheStreamEncodeMirroredLebMakesAndDecodesItBac
         }
     writeFileAtomically(raw, bytes);
     const VoxelType type = c.bits == 8 ? VoxelType::UInt8 : VoxelType::UInt16;
-    EXPECT_EQ(findLebMirrorPlanesInFile(raw, c.dims, type), c.planes);
-    ref::LebEncodeOptions derive;
-    derive.deriveGradients = true;
-    const std::string expected = ref::encodeMirroredLeb(v, c.bits, c.planes, derive);
-    for (const std::uint64_t window : {kLebWindowBytes, std::uint64_t{1}}) {
-      SCOPED_TRACE(window);
-      const LebFileRun enc = encodeLebFile(raw, c.dims, type, stream, derive, window, {}, c.planes);
-      EXPECT_EQ(readWholeFile(stream), expected);
-      EXPECT_EQ(enc.mirrorExceptions, 1u);
-      const auto file = openAnyLebFile(stream);
-      ASSERT_TRUE(std::holds_alternative<MirroredLebFile>(file));
-      decodeLebFile(std::get<MirroredLebFile>(file), back, grads, 0, window);
-      EXPECT_EQ(readWholeFile(back), bytes);
-      const std::vector<std::int8_t> g = ref::quantizedGradients(v);
-      EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
+    const std::vector<std::int8_t> g = ref::quantizedGradients(v);
+    for (const bool stored : {false, true}) {
+      SCOPED_TRACE(stored ? "stored gradients" : "derived gradients");
+      ref::LebEncodeOptions o;
+      o.deriveGradients = !stored;
+      // Stored gradients are folded too, so the planes found are those they fit: the central ones
+      // (s = n - 1). Off the centre a slice's central differences face one-sided ones, more
+      // exceptions than the search allows.
+      ref::LebMirrorPlanes found = c.planes;
+      for (int a = 0; a < 3; ++a)
+        if (stored && found.sum[a] != c.dims[a] - 1) found.sum[a] = ref::kNoLebMirror;
+      ASSERT_TRUE(found.any());
+      EXPECT_EQ(ref::findLebMirrorPlanes(v.data().data(), stored ? g.data() : nullptr, c.dims), found);
+      const std::string expected = ref::encodeMirroredLeb(v, c.bits, found, o);
+      for (const std::uint64_t window : {kLebWindowBytes, std::uint64_t{1}}) {
+        SCOPED_TRACE(window);
+        for (const LebFileMirror& mirror : {LebFileMirror{true, {}}, LebFileMirror{false, found}}) {
+          const LebFileRun enc = encodeLebFile(raw, c.dims, type, stream, o, window, {}, mirror);
+          EXPECT_EQ(enc.mirrorPlanes, found);
+          EXPECT_EQ(readWholeFile(stream), expected);
+          EXPECT_EQ(enc.mirrorExceptions, ref::parseMirroredLebStream(expected).exceptions.size());
+        }
+        const auto file = openAnyLebFile(stream);
+        ASSERT_TRUE(std::holds_alternative<MirroredLebFile>(file));
+        decodeLebFile(std::get<MirroredLebFile>(file), back, grads, 0, window);
+        EXPECT_EQ(readWholeFile(back), bytes);
+        EXPECT_EQ(readWholeFile(grads), std::string(g.begin(), g.end()));
+        std::filesystem::remove(grads);  // a stored channel is decoded (and checked) when not asked for too
+        decodeLebFile(std::get<MirroredLebFile>(file), back, {}, 0, window);
+        EXPECT_EQ(readWholeFile(back), bytes);
+        EXPECT_FALSE(std::filesystem::exists(grads));
+      }
     }
     try {
       openLebFile(stream);

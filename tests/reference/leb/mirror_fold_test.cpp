@@ -8,27 +8,17 @@
 
 #include <gtest/gtest.h>
 
+#include "reference/leb/gradients.h"
 #include "reference/leb/mirror_fold.h"
 #include "tests/reference/leb/leb_test_volumes.h"
+#include "tests/reference/leb/mirror_test_volumes.h"
 
 namespace voxref::ref {
 namespace {
 
+using test_support::mirrored;
+using test_support::mirroredGradients;
 using test_support::noise;
-
-// `v` made a mirror image of itself: each point whose coordinates are mirrored takes its image's
-// sample (by the definition in mirror_fold.h, written out here), so the planes hold exactly.
-Volume<std::uint16_t> mirrored(Volume<std::uint16_t> v, const LebMirrorPlanes& planes) {
-  const Dims3 d = v.dims();
-  auto image = [&](int c, int a) {
-    const std::int64_t s = planes.sum[a];
-    return s >= 0 && 2 * std::int64_t{c} > s && c <= s ? static_cast<int>(s - c) : c;
-  };
-  for (int z = 0; z < d[2]; ++z)
-    for (int y = 0; y < d[1]; ++y)
-      for (int x = 0; x < d[0]; ++x) v.at(x, y, z) = v.at(image(x, 0), image(y, 1), image(z, 2));
-  return v;
-}
 
 TEST(MirrorFold, FoldedCoordinatesAreTheRanksOfTheImagesAmongTheKeptCoordinates) {
   for (int n = 1; n <= 12; ++n)
@@ -75,13 +65,13 @@ TEST(MirrorFold, TheSearchFindsThePlanesAVolumeWasBuiltWith) {
   };
   for (const Built& b : cases) {
     const Volume<std::uint16_t> v = mirrored(noise(b.dims, 8, 11), b.planes);
-    EXPECT_EQ(findLebMirrorPlanes(v.data().data(), b.dims), b.planes) << dimsText(b.dims);
+    EXPECT_EQ(findLebMirrorPlanes(v.data().data(), nullptr, b.dims), b.planes) << dimsText(b.dims);
   }
   // Noise has no plane; neither has a volume too thin to fold.
   const Volume<std::uint16_t> n = noise({30, 30, 30}, 8, 5);
-  EXPECT_FALSE(findLebMirrorPlanes(n.data().data(), n.dims()).any());
+  EXPECT_FALSE(findLebMirrorPlanes(n.data().data(), nullptr, n.dims()).any());
   const Volume<std::uint16_t> thin = mirrored(noise({3, 3, 3}, 8, 5), {{2, 2, 2}});
-  EXPECT_FALSE(findLebMirrorPlanes(thin.data().data(), thin.dims()).any());
+  EXPECT_FALSE(findLebMirrorPlanes(thin.data().data(), nullptr, thin.dims()).any());
 }
 
 TEST(MirrorFold, TheSearchKeepsANearMirrorAndDropsOneThatDiffersTooOften) {
@@ -94,13 +84,13 @@ TEST(MirrorFold, TheSearchKeepsANearMirrorAndDropsOneThatDiffersTooOften) {
     auto& s = near.at(static_cast<int>(rng() % 40), 20 + static_cast<int>(rng() % 20), static_cast<int>(rng() % 40));
     s = static_cast<std::uint16_t>((s + 1) & 255);
   }
-  EXPECT_EQ(findLebMirrorPlanes(near.data().data(), d), planes);
+  EXPECT_EQ(findLebMirrorPlanes(near.data().data(), nullptr, d), planes);
   Volume<std::uint16_t> far = near;
   for (int i = 0; i < 60; ++i) {  // 80 in 32,000: one in 400
     auto& s = far.at(static_cast<int>(rng() % 40), 20 + static_cast<int>(rng() % 20), static_cast<int>(rng() % 40));
     s = static_cast<std::uint16_t>((s + 1) & 255);
   }
-  EXPECT_FALSE(findLebMirrorPlanes(far.data().data(), d).any());
+  EXPECT_FALSE(findLebMirrorPlanes(far.data().data(), nullptr, d).any());
 }
 
 TEST(MirrorFold, FoldThenUnfoldGivesBackEverySample) {
@@ -131,7 +121,7 @@ TEST(MirrorFold, FoldThenUnfoldGivesBackEverySample) {
     const Dims3 f = lebFoldedDims(c.dims, c.planes);
     std::vector<std::uint16_t> buffer(v.data().size());
     const std::vector<LebMirrorException> exceptions =
-        foldLebVolume(v.data().data(), c.dims, c.planes, c.bits, buffer.data());
+        foldLebVolume(v.data().data(), nullptr, c.dims, c.planes, c.bits, buffer.data(), nullptr);
     ASSERT_EQ(exceptions.size(), changed.size()) << dimsText(c.dims);
     for (const LebMirrorException& e : exceptions)
       EXPECT_NE(std::find(changed.begin(), changed.end(), e.index), changed.end());
@@ -147,7 +137,8 @@ TEST(MirrorFold, FoldThenUnfoldGivesBackEverySample) {
           ASSERT_EQ(buffer[x + f[0] * (y + f[1] * z)], v.at(keptAt(x, 0), keptAt(y, 1), keptAt(z, 2)));
         }
     std::vector<double> progress;
-    unfoldLebVolume(buffer.data(), c.dims, c.planes, c.bits, exceptions, [&](double d) { progress.push_back(d); });
+    unfoldLebVolume(buffer.data(), nullptr, c.dims, c.planes, c.bits, exceptions,
+                    [&](double d) { progress.push_back(d); });
     EXPECT_EQ(buffer, v.data()) << dimsText(c.dims);
     ASSERT_FALSE(progress.empty());
     EXPECT_EQ(progress.back(), 1.0);
@@ -155,11 +146,98 @@ TEST(MirrorFold, FoldThenUnfoldGivesBackEverySample) {
   }
 }
 
+// Random gradients (3 int8 a point), made to mirror with `planes`.
+std::vector<std::int8_t> randomMirroredGradients(const Dims3& d, const LebMirrorPlanes& planes, unsigned seed) {
+  std::vector<std::int8_t> g(3 * sampleCount(d));
+  std::mt19937 rng(seed);
+  for (std::int8_t& c : g) c = static_cast<std::int8_t>(static_cast<int>(rng() % 256) - 128);
+  return mirroredGradients(std::move(g), d, planes);
+}
+
+TEST(MirrorFold, GradientsFoldWithTheSignOfTheirMirrorAndUnfoldToEveryComponent) {
+  EXPECT_EQ(lebMirrorComponent(5, true, 0), -5);
+  EXPECT_EQ(lebMirrorComponent(-128, true, 0), -128);
+  EXPECT_EQ(lebMirrorComponent(127, false, 1), -128);
+  EXPECT_EQ(lebMirrorComponentResidual(-7, 7, true), 0);
+  EXPECT_EQ(lebMirrorComponentResidual(3, 7, true), 10);
+  const Dims3 d{20, 24, 18};
+  const LebMirrorPlanes planes{{25, 23, 14}};
+  const Volume<std::uint16_t> v = mirrored(noise(d, 8, 3), planes);
+  std::vector<std::int8_t> g = randomMirroredGradients(d, planes, 4);
+  std::vector<std::uint8_t> samples(v.data().begin(), v.data().end());
+  std::vector<std::uint8_t> folded(samples.size());
+  std::vector<std::int8_t> foldedGradients(g.size());
+  EXPECT_TRUE(foldLebVolume(samples.data(), g.data(), d, planes, folded.data(), foldedGradients.data()).empty());
+  // Three points off their mirrored gradient (one also off its sample), at mirrored points.
+  const std::size_t moved[3] = {v.index(19, 0, 0), v.index(0, 20, 17), v.index(19, 23, 17)};
+  g[3 * moved[0] + 0] = static_cast<std::int8_t>(g[3 * moved[0]] + 1);
+  g[3 * moved[1] + 2] = static_cast<std::int8_t>(g[3 * moved[1] + 2] - 100);
+  samples[moved[2]] = static_cast<std::uint8_t>(samples[moved[2]] + 9);
+  g[3 * moved[2] + 1] = static_cast<std::int8_t>(g[3 * moved[2] + 1] ^ 64);
+  const std::vector<LebMirrorException> exceptions =
+      foldLebVolume(samples.data(), g.data(), d, planes, folded.data(), foldedGradients.data());
+  ASSERT_EQ(exceptions.size(), 3u);
+  EXPECT_EQ(exceptions[0], (LebMirrorException{moved[0], 0, {1, 0, 0}}));
+  EXPECT_EQ(exceptions[1], (LebMirrorException{moved[1], 0, {0, 0, 156}}));
+  EXPECT_EQ(exceptions[2].residual, 9u);
+  // The folded gradients are the kept points', in order; unfolded in place they are every point's.
+  const Dims3 f = lebFoldedDims(d, planes);
+  std::size_t at = 0;
+  for (int z = 0; z < d[2]; ++z)
+    for (int y = 0; y < d[1]; ++y)
+      for (int x = 0; x < d[0]; ++x)
+        if (!lebMirroredCoordinate(x, planes.sum[0]) && !lebMirroredCoordinate(y, planes.sum[1]) &&
+            !lebMirroredCoordinate(z, planes.sum[2])) {
+          ASSERT_TRUE(std::equal(g.begin() + 3 * v.index(x, y, z), g.begin() + 3 * v.index(x, y, z) + 3,
+                                 foldedGradients.begin() + 3 * at));
+          ++at;
+        }
+  ASSERT_EQ(at, sampleCount(f));
+  std::vector<std::uint8_t> back = folded;
+  std::vector<std::int8_t> backGradients = foldedGradients;
+  back.resize(samples.size());
+  backGradients.resize(g.size());
+  unfoldLebVolume(back.data(), backGradients.data(), d, planes, exceptions);
+  EXPECT_EQ(back, samples);
+  EXPECT_EQ(backGradients, g);
+}
+
+TEST(MirrorFold, CentralDifferencesOfAVolumeMirroredAcrossItsCentresMirrorExactly) {
+  // Across the central plane of an axis (s = n - 1) a face pairs with a face, and each point's
+  // difference quotient with its image's negated (gradients.h: the one-sided ones too); normalising
+  // and rounding half away from zero keep the sign's symmetry. So no gradient differs.
+  const Dims3 d{18, 13, 10};
+  const LebMirrorPlanes centres{{17, 12, 9}};
+  const Volume<std::uint16_t> v = mirrored(noise(d, 8, 6), centres);
+  const std::vector<std::int8_t> g = quantizedGradients(v);
+  std::vector<std::uint16_t> folded(v.data().size());
+  std::vector<std::int8_t> foldedGradients(g.size());
+  EXPECT_TRUE(foldLebVolume(v.data().data(), g.data(), d, centres, 8, folded.data(), foldedGradients.data()).empty());
+  EXPECT_EQ(findLebMirrorPlanes(v.data().data(), g.data(), d), centres);
+  // Off centre (s = n - 3 on x) the points of the slice x = s have a central difference and their
+  // images on the face x = 0 a one-sided one: most of that slice differs (130 of its 130 points
+  // here, 1 in 8 of the 1,040 mirrored points), more than one in 16: the fold is refused, and the
+  // search drops the plane.
+  const LebMirrorPlanes off{{15, kNoLebMirror, kNoLebMirror}};
+  const Volume<std::uint16_t> w = mirrored(noise(d, 8, 6), off);
+  const std::vector<std::int8_t> wg = quantizedGradients(w);
+  EXPECT_EQ(findLebMirrorPlanes(w.data().data(), nullptr, d), off);
+  EXPECT_FALSE(findLebMirrorPlanes(w.data().data(), wg.data(), d).any());
+  try {
+    foldLebVolume(w.data().data(), wg.data(), d, off, 8, folded.data(), foldedGradients.data());
+    FAIL() << "a fold with a slice of differing gradients";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("in their sample or gradient, more than the 65 (one in 16 mirrored points)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(MirrorFold, AFoldWithTooManyExceptionsIsRefused) {
   const Volume<std::uint16_t> v = noise({16, 16, 16}, 8, 1);
   std::vector<std::uint8_t> in(v.data().begin(), v.data().end()), out(in.size());
   try {
-    foldLebVolume(in.data(), v.dims(), {{15, kNoLebMirror, kNoLebMirror}}, out.data());
+    foldLebVolume(in.data(), nullptr, v.dims(), {{15, kNoLebMirror, kNoLebMirror}}, out.data(), nullptr);
     FAIL() << "noise folded";
   } catch (const std::invalid_argument& e) {
     EXPECT_NE(std::string(e.what()).find("more than the 8 (one in 256 mirrored points)"), std::string::npos)
