@@ -147,19 +147,20 @@ std::vector<LebMirrorException> fold(const T* v, const std::int8_t* g, const Dim
   requireLebMirrorPlanes(d, planes);
   if (g && !foldedGradients) throw std::invalid_argument("foldLebVolume: gradients to fold but none to fold them into");
   const FoldTables t(d, planes);
+  const std::uint64_t cap = lebMirrorExceptionCap(d, planes, g != nullptr);
   std::vector<LebMirrorException> exceptions;
+  std::uint64_t differing = 0;  // past the cap they are counted, not kept
   std::size_t out = 0;
   forEachPointAndImage(d, t, [&](std::size_t i, int x, int y, int z, std::size_t image) {
     if (image == i) {  // kept points come in the folded volume's order
       if (g) std::copy_n(g + 3 * i, 3, foldedGradients + 3 * out);
       folded[out++] = v[i];
     } else if (const LebMirrorException e = residualOf(v, g, sampleBits, i, image, flips(t, x, y, z)); differs(e)) {
-      exceptions.push_back(e);
+      if (++differing <= cap) exceptions.push_back(e);
     }
   });
-  const std::uint64_t cap = lebMirrorExceptionCap(d, planes, g != nullptr);
-  if (exceptions.size() > cap)
-    throw std::invalid_argument("the mirror planes leave " + std::to_string(exceptions.size()) +
+  if (differing > cap)
+    throw std::invalid_argument("the mirror planes leave " + std::to_string(differing) +
                                 " points that differ from their image" + (g ? " in their sample or gradient" : "") +
                                 ", more than the " + std::to_string(cap) + " (one in " +
                                 std::to_string(g ? kLebMirrorGradientExceptionShare : kLebMirrorExceptionShare) +

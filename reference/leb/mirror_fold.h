@@ -111,7 +111,8 @@ LebMirrorPlanes findLebMirrorPlanes(const std::uint16_t* samples, const std::int
 // Writes the kept samples into `folded` (lebFoldedDims, x fastest), and with `gradients` (3 int8 a
 // point; null for none) their gradients into `foldedGradients`, and returns the exceptions,
 // ascending. Throws std::invalid_argument as requireLebMirrorPlanes, and when there are more
-// exceptions than lebMirrorExceptionCap allows (naming the count and the cap).
+// exceptions than lebMirrorExceptionCap allows (naming the count and the cap; it keeps no more than
+// the cap while it counts them).
 std::vector<LebMirrorException> foldLebVolume(const std::uint8_t* samples, const std::int8_t* gradients,
                                               const Dims3& dims, const LebMirrorPlanes& planes, std::uint8_t* folded,
                                               std::int8_t* foldedGradients);
