@@ -19,23 +19,6 @@ namespace {
 // Bricks of 4^3 points: the memo's slot order (leb_reader.h).
 constexpr int kBrickLog2 = 2;
 
-// A context page's values as the cache keeps them: values of 8 bits (an 8-bit stream's samples,
-// the gradients' components) as bytes, two to an int16 entry, so that a page costs its values'
-// bytes (the engine's pages of both channels at 2^16 fit the 64 MB of the benches); 16-bit samples
-// one to an entry. Read and written through unsigned char, which may alias any object.
-std::size_t contextPageEntries(std::size_t values, int valueBits) { return valueBits == 8 ? (values + 1) / 2 : values; }
-void setContextValue(std::vector<std::int16_t>& page, std::size_t i, int valueBits, std::int32_t v) {
-  if (valueBits == 8)
-    reinterpret_cast<unsigned char*>(page.data())[i] = static_cast<unsigned char>(v);
-  else
-    page[i] = static_cast<std::int16_t>(v);
-}
-std::int32_t contextValue(const std::vector<std::int16_t>& page, std::size_t i, int valueBits, bool isSigned) {
-  if (valueBits != 8) return static_cast<std::uint16_t>(page[i]);
-  const unsigned char b = reinterpret_cast<const unsigned char*>(page.data())[i];
-  return isSigned ? static_cast<std::int32_t>(static_cast<std::int8_t>(b)) : static_cast<std::int32_t>(b);
-}
-
 }  // namespace
 
 LebReader::LebReader(std::shared_ptr<const LebStream> stream, std::size_t cacheBudgetBytes)
@@ -120,9 +103,9 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
     if (inside) {
       const std::uint64_t key = (page << 1) | static_cast<std::uint64_t>(c.kind);
       // The hit path builds no std::function and takes no share of the page.
-      const std::vector<std::int16_t>* deltas = cache_.peek(key);
+      const DecodedPage* cached = cache_.peek(key);
       PageCache::Page decoded;  // a page larger than the budget lives only here
-      if (!deltas) {
+      if (!cached) {
         // A point that needs both channels, neither page cached: the two pages decode together,
         // their codes read interleaved (decodeChannelPagesPositions); this loop's next channel
         // then finds the gradients' page in the cache (or decodes it again, where the budget
@@ -131,22 +114,22 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
         if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients && !contextPages() &&
             !cache_.contains(gradientsKey)) {
           auto both = decodeChannelPagesPositions(*stream_, order_, page);
-          cache_.get(gradientsKey, [&] { return std::move(both[1]); });
-          decoded = cache_.get(key, [&] { return std::move(both[0]); });
+          cache_.get(gradientsKey, [&] { return DecodedPage::deltas(std::move(both[1])); });
+          decoded = cache_.get(key, [&] { return DecodedPage::deltas(std::move(both[0])); });
         } else if (contextPages()) {
           decoded = cache_.get(key, [&] { return decodeContextPage(c, page); });
         } else {
-          decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
+          decoded =
+              cache_.get(key, [&] { return DecodedPage::deltas(decodePagePositions(*stream_, c, order_, page)); });
         }
-        deltas = decoded.get();
+        cached = decoded.get();
       }
       const std::size_t at = static_cast<std::size_t>(h - (page << stream_->pageBits)) * comps;
-      if (contextPages())  // the values themselves: the samples, or the gradients' int8
+      if (cached->holdsDeltas())
         for (std::size_t k = 0; k < comps; ++k)
-          have.v[first + k] = contextValue(*deltas, at + k, c.valueBits, c.isSigned);
-      else
-        for (std::size_t k = 0; k < comps; ++k)
-          have.v[first + k] = reconstructSample(pred[first + k], (*deltas)[at + k], c.valueBits, c.isSigned);
+          have.v[first + k] = reconstructSample(pred[first + k], cached->delta(at + k), c.valueBits, c.isSigned);
+      else  // the values themselves: the samples, or the gradients' int8
+        for (std::size_t k = 0; k < comps; ++k) have.v[first + k] = cached->value(at + k, c.isSigned);
     }
     ++reconstructed_;
   }
@@ -166,13 +149,13 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
   return have;
 }
 
-std::vector<std::int16_t> LebReader::decodeContextPage(const LebChannel& c, std::uint64_t page) {
+DecodedPage LebReader::decodeContextPage(const LebChannel& c, std::uint64_t page) {
   const StoredPage bytes = storedPage(*stream_, c, page);
   const std::uint64_t begin = page << stream_->pageBits;
   const auto comps = static_cast<std::size_t>(c.components);
-  std::vector<std::int16_t> values(contextPageEntries((std::size_t{1} << stream_->pageBits) * comps, c.valueBits), 0);
-  const auto get = [&](std::size_t i) { return contextValue(values, i, c.valueBits, c.isSigned); };
-  const auto set = [&](std::size_t i, std::int32_t v) { setContextValue(values, i, c.valueBits, v); };
+  DecodedPage values = DecodedPage::values((std::size_t{1} << stream_->pageBits) * comps, c.valueBits);
+  const auto get = [&](std::size_t i) { return values.value(i, c.isSigned); };
+  const auto set = [&](std::size_t i, std::int32_t v) { values.setValue(i, v); };
   // A corner is coarser than its point: decoded before it in this page, or in an earlier page
   // (through the cache, recursively). Only a page that holds a coarser scale than its last point's
   // can hold corners of its points (contextPagesNeededBelow names the page itself then). The place

@@ -96,10 +96,9 @@ class LebReader {
   // Whether the stream's pages hold values (the context coder) rather than deltas.
   bool contextPages() const { return stream_->coder == LebCoder::Context; }
   // A context stream's page of channel c: its samples, or its gradients' three int8, at their
-  // places (2^pageBits x components values, 0 for the padding; 8-bit values packed two to an entry:
-  // contextValue in leb_reader.cpp reads them), its points' corners outside the page reconstructed
-  // through valueAt.
-  std::vector<std::int16_t> decodeContextPage(const LebChannel& c, std::uint64_t page);
+  // places (DecodedPage::values, 2^pageBits x components values, 0 for the padding), its points'
+  // corners outside the page reconstructed through valueAt.
+  DecodedPage decodeContextPage(const LebChannel& c, std::uint64_t page);
 
   // A memo slot: the point's linear index (all ones: empty), the query that wrote it, the data
   // value and the gradient's components (a gradient is 8 bits: gradients.h), the known channels.

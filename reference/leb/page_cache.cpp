@@ -4,7 +4,7 @@
 
 namespace voxref::ref {
 
-const std::vector<std::int16_t>* PageCache::peek(std::uint64_t key) {
+const DecodedPage* PageCache::peek(std::uint64_t key) {
   // The two most recent pages without the index, the others through it.
   const auto holds = [&](std::list<Entry>::iterator at) { return at != lru_.end() && at->key == key; };
   auto it = lru_.begin();
@@ -20,14 +20,14 @@ const std::vector<std::int16_t>* PageCache::peek(std::uint64_t key) {
 
 PageCache::Page PageCache::find(std::uint64_t key) { return peek(key) ? lru_.front().page : nullptr; }
 
-PageCache::Page PageCache::get(std::uint64_t key, const std::function<std::vector<std::int16_t>()>& decode) {
+PageCache::Page PageCache::get(std::uint64_t key, const std::function<DecodedPage()>& decode) {
   if (Page hit = find(key)) return hit;
   ++stats_.misses;
-  Page page = std::make_shared<const std::vector<std::int16_t>>(decode());
-  const std::size_t cost = page->size() * sizeof(std::int16_t);
+  Page page = std::make_shared<const DecodedPage>(decode());
+  const std::size_t cost = page->byteSize();
   if (cost > budget_) return page;
   while (stats_.bytes + cost > budget_ && !lru_.empty()) {
-    stats_.bytes -= lru_.back().page->size() * sizeof(std::int16_t);
+    stats_.bytes -= lru_.back().page->byteSize();
     index_.erase(lru_.back().key);
     lru_.pop_back();
     ++stats_.evictions;

@@ -5,11 +5,11 @@
 namespace voxref::ref {
 namespace {
 
-// A page of n int16 values costs 2n bytes.
-std::function<std::vector<std::int16_t>()> page(std::size_t n, int* decodes) {
+// A page of n int16 deltas costs 2n bytes.
+std::function<DecodedPage()> page(std::size_t n, int* decodes) {
   return [n, decodes] {
     ++*decodes;
-    return std::vector<std::int16_t>(n, 7);
+    return DecodedPage::deltas(std::vector<std::int16_t>(n, 7));
   };
 }
 
@@ -75,7 +75,7 @@ TEST(PageCache, PeekMakesWhatItFindsTheMostRecentAsFindDoes) {
   cache.get(1, page(100, &decodes));
   cache.get(2, page(100, &decodes));  // recent first: 2 1
   EXPECT_EQ(cache.peek(9), nullptr);
-  const std::vector<std::int16_t>* two = cache.peek(2);  // the most recent
+  const DecodedPage* two = cache.peek(2);  // the most recent
   ASSERT_NE(two, nullptr);
   EXPECT_EQ(two, cache.find(2).get());
   ASSERT_NE(cache.peek(1), nullptr);  // the second: 1 2
@@ -103,13 +103,34 @@ TEST(PageCache, APageLargerThanTheBudgetIsHandedOutButNotKept) {
   EXPECT_EQ(cache.stats().bytes, 0u);
 }
 
+// A context page's values cost what they hold: a byte each at 8 bits (the gradients' read as int8),
+// two at 16.
+TEST(PageCache, ValuePagesCostTheirValuesBytes) {
+  DecodedPage bytes = DecodedPage::values(100, 8);
+  bytes.setValue(0, 200);
+  bytes.setValue(1, -3);
+  EXPECT_FALSE(bytes.holdsDeltas());
+  EXPECT_EQ(bytes.value(0, false), 200);
+  EXPECT_EQ(bytes.value(1, true), -3);
+  EXPECT_EQ(bytes.value(2, true), 0);
+  DecodedPage words = DecodedPage::values(100, 16);
+  words.setValue(5, 65535);
+  EXPECT_EQ(words.value(5, false), 65535);
+  PageCache cache(300);
+  cache.get(1, [&] { return bytes; });
+  EXPECT_EQ(cache.stats().bytes, 100u);
+  cache.get(2, [&] { return words; });
+  EXPECT_EQ(cache.stats().bytes, 300u);
+  EXPECT_EQ(cache.stats().evictions, 0u);
+}
+
 TEST(PageCache, EvictedPagesStayValidForTheirHolders) {
   PageCache cache(200);
   int decodes = 0;
   const auto held = cache.get(1, page(100, &decodes));
   cache.get(2, page(100, &decodes));  // evicts 1
   EXPECT_EQ(held->size(), 100u);
-  EXPECT_EQ((*held)[99], 7);
+  EXPECT_EQ(held->delta(99), 7);
 }
 
 }  // namespace

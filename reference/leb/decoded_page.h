@@ -1,0 +1,66 @@
+// A decoded page as LebReader's page cache keeps it (leb_reader.h, page_cache.h): what it holds,
+// how a position is read, and what it costs.
+//
+// - The deltas of a page of the paper's coders (lead-1, adaptive; FORMAT.md beside this file,
+//   "Pages"): an int16 a value (every delta of 8- and 16-bit samples fits), added to the point's
+//   prediction by the reader (reconstructSample).
+// - The values of a context page ("Context pages", "Context gradient pages"): the samples or the
+//   gradients' components themselves, a byte each for 8-bit values (an 8-bit stream's samples, the
+//   gradients), an int16 each for 16-bit samples. So the engine's pages of both channels at 2^16
+//   fit the benches' 64 MB cache (43 MB).
+//
+// Indices are of values (a point's components one after the other), unchecked: the reader computes
+// them from the point's place in its page.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace voxref::ref {
+
+class DecodedPage {
+ public:
+  static DecodedPage deltas(std::vector<std::int16_t> deltas) {
+    DecodedPage p;
+    p.words_ = std::move(deltas);
+    return p;
+  }
+  // `count` values of `valueBits` bits (8 or 16), all 0 until set.
+  static DecodedPage values(std::size_t count, int valueBits) {
+    DecodedPage p;
+    p.holdsValues_ = true;
+    if (valueBits == 8)
+      p.bytes_.assign(count, 0);
+    else
+      p.words_.assign(count, 0);
+    return p;
+  }
+
+  bool holdsDeltas() const { return !holdsValues_; }
+  // A page of deltas: the delta at i.
+  std::int16_t delta(std::size_t i) const { return words_[i]; }
+  // A page of values: the value at i, an 8-bit one read as int8 when `isSigned` (the gradients).
+  std::int32_t value(std::size_t i, bool isSigned) const {
+    if (bytes_.empty()) return static_cast<std::uint16_t>(words_[i]);
+    return isSigned ? static_cast<std::int32_t>(static_cast<std::int8_t>(bytes_[i])) : std::int32_t{bytes_[i]};
+  }
+  void setValue(std::size_t i, std::int32_t v) {
+    if (bytes_.empty())
+      words_[i] = static_cast<std::int16_t>(v);
+    else
+      bytes_[i] = static_cast<std::uint8_t>(v);
+  }
+  // Values (deltas or values) the page holds.
+  std::size_t size() const { return bytes_.empty() ? words_.size() : bytes_.size(); }
+  // What the page costs the cache: its values' bytes.
+  std::size_t byteSize() const { return words_.size() * sizeof(std::int16_t) + bytes_.size(); }
+
+ private:
+  DecodedPage() = default;
+  bool holdsValues_ = false;
+  std::vector<std::int16_t> words_;  // deltas, or 16-bit values
+  std::vector<std::uint8_t> bytes_;  // 8-bit values
+};
+
+}  // namespace voxref::ref
