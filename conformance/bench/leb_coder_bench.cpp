@@ -178,34 +178,24 @@ CoderFigure contextGradients(const LebDataset& d, const std::vector<std::int8_t>
 }
 
 // The context coder's stream of the samples folded across the volume's mirror planes
-// (reference/leb/FORMAT.md, "Mirrored streams"; findLebMirrorPlanes), pages of 2^pageBits: the
-// whole stream's bytes and its whole decode, checked in the run. Empty when the volume has no plane.
+// (reference/leb/FORMAT.md, "Mirrored streams"; findLebMirrorPlanes), pages of 2^pageBits, and with
+// `gradients` (3 int8 a sample; null for none) those stored folded with them: the whole stream's
+// bytes and its whole decode, checked in the run. Empty when the volume has no plane.
 std::optional<CoderFigure> contextMirrored(const LebDataset& d, const ref::LebMirrorPlanes& planes, int pageBits,
-                                           int threads, int runs) {
+                                           int threads, int runs, const std::vector<std::int8_t>* gradients = nullptr) {
   if (!planes.any()) return std::nullopt;
   const ref::MirroredLebStream m = ref::parseMirroredLebStream(
-      ref::encodeMirroredLeb(d.volume, d.bits, planes, contextOptions(pageBits, threads, false)));
-  if (ref::decodeMirroredLeb(m, 1).data.data() != d.volume.data())
-    throw std::runtime_error("leb.coder: a mirrored stream did not decode to its samples");
-  return CoderFigure{"context, mirrored (" + ref::lebMirrorPlanesText(planes) + "; " +
-                         std::to_string(m.exceptions.size()) + " points off their image; " + contextPages(pageBits) +
-                         ", the whole volume decoded and unfolded)",
-                     static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
-}
-
-// The mirrored stream that stores `gradients` folded with the samples across `planes`: the whole
-// stream's bytes and its whole decode, checked in the run (planes found: the caller's).
-CoderFigure contextMirroredWithGradients(const LebDataset& d, const std::vector<std::int8_t>& gradients,
-                                         const ref::LebMirrorPlanes& planes, int pageBits, int threads, int runs) {
-  const ref::MirroredLebStream m = ref::parseMirroredLebStream(
-      ref::encodeMirroredLeb(d.volume, d.bits, planes, contextOptions(pageBits, threads, true), gradients));
+      ref::encodeMirroredLeb(d.volume, d.bits, planes, contextOptions(pageBits, threads, gradients != nullptr),
+                             gradients ? *gradients : std::vector<std::int8_t>{}));
   const ref::LebDecoded back = ref::decodeMirroredLeb(m, 1);
-  if (back.data.data() != d.volume.data() || back.gradients != gradients)
-    throw std::runtime_error("leb.coder: a mirrored stream did not decode to its samples and gradients");
-  return {"context, mirrored, gradients folded with the samples (" + ref::lebMirrorPlanesText(planes) + "; " +
-              std::to_string(m.exceptions.size()) + " points off their image in sample or gradient; " +
-              contextPages(pageBits) + ", the whole volume decoded and unfolded)",
-          static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
+  if (back.data.data() != d.volume.data() || (gradients && back.gradients != *gradients))
+    throw std::runtime_error("leb.coder: a mirrored stream did not decode to its samples" +
+                             std::string(gradients ? " and gradients" : ""));
+  return CoderFigure{"context, mirrored" + std::string(gradients ? ", gradients folded with the samples" : "") + " (" +
+                         ref::lebMirrorPlanesText(planes) + "; " + std::to_string(m.exceptions.size()) +
+                         " points off their image" + (gradients ? " in sample or gradient" : "") + "; " +
+                         contextPages(pageBits) + ", the whole volume decoded and unfolded)",
+                     static_cast<double>(m.streamBytes), measure([&] { (void)ref::decodeMirroredLeb(m, 1); }, runs)};
 }
 
 // The gradients' figure of that stream: its bytes and decode less those of the mirrored stream of
@@ -262,7 +252,7 @@ struct ChannelFigures {
   Timing derive;                               // gradients only: quantizedGradients of the samples, one thread
   double repeatedRows = 0.0;                   // repeatedRowShare of the channel's x-rows
   std::vector<CoderFigure> mirrored;           // contextMirrored (data), gradientsPart, at 2^16 and 2^18, if a plane
-  std::vector<CoderFigure> mirroredWhole;      // gradients: contextMirroredWithGradients, whole, as `mirrored`
+  std::vector<CoderFigure> mirroredWhole;      // gradients: contextMirrored with them, whole, as `mirrored`
 };
 
 std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDataset& d) {
@@ -298,7 +288,7 @@ std::vector<ChannelFigures> measureDataset(const BenchOptions& o, const LebDatas
     for (const int pageBits : {16, 18}) {
       std::optional<CoderFigure> m = contextMirrored(d, planes, pageBits, o.threads, runs);
       if (m && !data) {
-        f.mirroredWhole.push_back(contextMirroredWithGradients(d, gradients, planes, pageBits, o.threads, runs));
+        f.mirroredWhole.push_back(*contextMirrored(d, planes, pageBits, o.threads, runs, &gradients));
         m = gradientsPart(f.mirroredWhole.back(), *m);
       }
       if (m) f.mirrored.push_back(std::move(*m));
