@@ -8,17 +8,26 @@
 
 namespace voxref::conf {
 
-BaselineResult zstdBaseline(std::string_view raw, int level) {
-  BaselineResult r{"zstd -" + std::to_string(level), 0, {}, {}};
-  std::string packed(ZSTD_compressBound(raw.size()), '\0');
+ZstdFrame::ZstdFrame(std::string_view raw, int level) : packed_(ZSTD_compressBound(raw.size()), '\0'), back_(raw) {
   std::size_t size = 0;
-  r.compress = measureOnce([&] { size = ZSTD_compress(packed.data(), packed.size(), raw.data(), raw.size(), level); });
+  compress_ = measureOnce([&] { size = ZSTD_compress(packed_.data(), packed_.size(), raw.data(), raw.size(), level); });
   if (ZSTD_isError(size)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(size));
-  r.bytes = size;
-  std::string back(raw.size(), '\0');
-  std::size_t got = 0;
-  r.decompress = measure([&] { got = ZSTD_decompress(back.data(), back.size(), packed.data(), size); });
-  if (ZSTD_isError(got) || got != raw.size() || back != raw) throw std::runtime_error("zstd: the round trip lost data");
+  packed_.resize(size);
+  std::fill(back_.begin(), back_.end(), '\0');
+  const std::size_t got = ZSTD_decompress(back_.data(), back_.size(), packed_.data(), packed_.size());
+  if (ZSTD_isError(got) || got != raw.size() || back_ != raw)
+    throw std::runtime_error("zstd: the round trip lost data");
+}
+
+void ZstdFrame::decode() {
+  const std::size_t got = ZSTD_decompress(back_.data(), back_.size(), packed_.data(), packed_.size());
+  if (ZSTD_isError(got)) throw std::runtime_error(std::string("zstd: ") + ZSTD_getErrorName(got));
+}
+
+BaselineResult zstdBaseline(std::string_view raw, int level) {
+  ZstdFrame frame(raw, level);
+  BaselineResult r{"zstd -" + std::to_string(level), frame.bytes(), frame.compressTime(), {}};
+  r.decompress = measure([&] { frame.decode(); });
   return r;
 }
 

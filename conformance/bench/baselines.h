@@ -23,6 +23,25 @@ struct BaselineResult {
 
 // zstd at `level` (one frame, one thread: libzstd's single-threaded API).
 BaselineResult zstdBaseline(std::string_view raw, int level);
+
+// `raw` compressed by zstd at `level` (one frame, one thread), for a bench that times its decode
+// taking turns with another decoder's (measureTakingTurns): the decoder zstdBaseline times. The
+// constructor compresses (timed once), decodes and checks the round trip; decode() decompresses
+// into the frame's own buffer and checks nothing, so that it times zstd alone. Throws
+// std::runtime_error for a zstd error or a round trip that lost data.
+class ZstdFrame {
+ public:
+  ZstdFrame(std::string_view raw, int level);
+  void decode();
+  std::size_t rawBytes() const { return back_.size(); }
+  std::string_view decoded() const { return back_; }  // what the last decode gave
+  std::size_t bytes() const { return packed_.size(); }
+  const Timing& compressTime() const { return compress_; }
+
+ private:
+  std::string packed_, back_;
+  Timing compress_;
+};
 // xz (liblzma's .xz container, CRC64) at `preset` (0..9).
 BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset);
 // `coder` (one of the above at a level) applied to each piece of `pieceBytes` of `raw` (the last

@@ -59,5 +59,23 @@ TEST(PiecewiseBaseline, EachPieceIsCodedOnItsOwn) {
   EXPECT_LT(zstdBaseline(piece + piece, 3).bytes, two.bytes);
 }
 
+// The frame a bench times taking turns: zstd's own frame of the bytes (zstdBaseline's size), and
+// every decode gives the bytes back, the first decode after the constructor's check too.
+TEST(ZstdFrame, DecodesTheBytesItWasGivenEveryTime) {
+  std::string raw;
+  for (int i = 0; i < 100000; ++i) raw.push_back(static_cast<char>("abcab"[i % 5] + (i % 977 == 0)));
+  ZstdFrame frame(raw, 19);
+  EXPECT_EQ(frame.rawBytes(), raw.size());
+  EXPECT_EQ(frame.bytes(), zstdBaseline(raw, 19).bytes);
+  EXPECT_LT(frame.bytes(), raw.size() / 20);  // a period of 5 with a mark every 977 bytes
+  for (int run = 0; run < 3; ++run) {
+    frame.decode();
+    EXPECT_EQ(frame.decoded(), raw);
+  }
+  ZstdFrame empty("", 3);
+  empty.decode();
+  EXPECT_TRUE(empty.decoded().empty());
+}
+
 }  // namespace
 }  // namespace voxref::conf
