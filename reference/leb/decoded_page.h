@@ -2,8 +2,10 @@
 // how a position is read, and what it costs.
 //
 // - The deltas of a page of the paper's coders (lead-1, adaptive; FORMAT.md beside this file,
-//   "Pages"): an int16 a value (every delta of 8- and 16-bit samples fits), added to the point's
-//   prediction by the reader (reconstructSample).
+//   "Pages"), added to the point's prediction by the reader (reconstructSample): a delta is a b-bit
+//   two's complement value, so a byte each for an 8-bit channel (an 8-bit stream's samples, the
+//   gradients) and an int16 each for 16-bit samples. The whole engine's deltas, both channels in
+//   pages of 2^12, take 34 MB, within the benches' 64 MB cache (67 MB as int16, docs/leb.md).
 // - The values of a context page ("Context pages", "Context gradient pages"): the samples or the
 //   gradients' components themselves, a byte each for 8-bit values (an 8-bit stream's samples, the
 //   gradients), an int16 each for 16-bit samples. So the engine's pages of both channels at 2^16
@@ -21,9 +23,14 @@ namespace voxref::ref {
 
 class DecodedPage {
  public:
-  static DecodedPage deltas(std::vector<std::int16_t> deltas) {
+  // The deltas of a `valueBits`-bit channel (8 or 16), each in that range, as the page decoders
+  // give them (decodePagePositions); kept a byte each at 8 bits.
+  static DecodedPage deltas(std::vector<std::int16_t> deltas, int valueBits) {
     DecodedPage p;
-    p.words_ = std::move(deltas);
+    if (valueBits == 8)
+      p.bytes_.assign(deltas.begin(), deltas.end());
+    else
+      p.words_ = std::move(deltas);
     return p;
   }
   // `count` values of `valueBits` bits (8 or 16), all 0 until set.
@@ -39,7 +46,9 @@ class DecodedPage {
 
   bool holdsDeltas() const { return !holdsValues_; }
   // A page of deltas: the delta at i.
-  std::int16_t delta(std::size_t i) const { return words_[i]; }
+  std::int16_t delta(std::size_t i) const {
+    return bytes_.empty() ? words_[i] : static_cast<std::int16_t>(static_cast<std::int8_t>(bytes_[i]));
+  }
   // A page of values: the value at i, an 8-bit one read as int8 when `isSigned` (the gradients).
   std::int32_t value(std::size_t i, bool isSigned) const {
     if (bytes_.empty()) return static_cast<std::uint16_t>(words_[i]);

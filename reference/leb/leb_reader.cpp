@@ -114,13 +114,14 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
         if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients && !contextPages() &&
             !cache_.contains(gradientsKey)) {
           auto both = decodeChannelPagesPositions(*stream_, order_, page);
-          cache_.get(gradientsKey, [&] { return DecodedPage::deltas(std::move(both[1])); });
-          decoded = cache_.get(key, [&] { return DecodedPage::deltas(std::move(both[0])); });
+          const int gradientBits = channel(LebChannelKind::Gradients).valueBits;
+          cache_.get(gradientsKey, [&] { return DecodedPage::deltas(std::move(both[1]), gradientBits); });
+          decoded = cache_.get(key, [&] { return DecodedPage::deltas(std::move(both[0]), c.valueBits); });
         } else if (contextPages()) {
           decoded = cache_.get(key, [&] { return decodeContextPage(c, page); });
         } else {
-          decoded =
-              cache_.get(key, [&] { return DecodedPage::deltas(decodePagePositions(*stream_, c, order_, page)); });
+          decoded = cache_.get(
+              key, [&] { return DecodedPage::deltas(decodePagePositions(*stream_, c, order_, page), c.valueBits); });
         }
         cached = decoded.get();
       }

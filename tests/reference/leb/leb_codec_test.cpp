@@ -273,6 +273,36 @@ TEST(LebReader, RandomAccessEqualsTheWholeDecode) {
     }
 }
 
+// Noise of 8 and 16 bits gives deltas over the whole two's complement range of each; the cache
+// keeps them a byte each at 8 bits and two at 16 (decoded_page.h), so a 16-bit delta cut to a byte
+// shows here. Every point, read in random order, equals the volume and its quantized gradients,
+// with pages evicted and decoded again under a small budget.
+TEST(LebReader, EveryPointOfNoiseEqualsTheVolume) {
+  for (const LebCoder coder : kCoders)
+    for (const int bits : {8, 16}) {
+      SCOPED_TRACE(std::string(lebCoderName(coder)) + ", " + std::to_string(bits) + " bits");
+      const Volume<std::uint16_t> v = noise({13, 11, 9}, bits, 23u + static_cast<unsigned>(bits));
+      LebEncodeOptions o;
+      o.pageBits = 6;
+      o.coder = coder;
+      auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, bits, o)));
+      const std::vector<std::int8_t> g = quantizedGradients(v);
+      LebReader reader(s, 1 << 11);
+      std::vector<GridPoint> points;
+      for (int z = 0; z < 9; ++z)
+        for (int y = 0; y < 11; ++y)
+          for (int x = 0; x < 13; ++x) points.push_back({x, y, z});
+      std::shuffle(points.begin(), points.end(), std::mt19937(5));
+      for (const GridPoint& p : points) {
+        const LebReader::SampleAndGradient sg = reader.sampleAndGradient(p);
+        const std::size_t at = 3 * v.index(p[0], p[1], p[2]);
+        ASSERT_EQ(sg.sample, v.at(p[0], p[1], p[2])) << p[0] << " " << p[1] << " " << p[2];
+        ASSERT_EQ(sg.gradient, (std::array<std::int8_t, 3>{g[at], g[at + 1], g[at + 2]}));
+      }
+      EXPECT_GT(reader.cacheStats().evictions, 0u);
+    }
+}
+
 TEST(LebReader, ABudgetOfZeroDecodesEveryTimeAndStillAnswers) {
   const Volume<std::uint16_t> v = smooth({17, 17, 17}, 8);
   auto s = std::make_shared<const LebStream>(parseLebStream(encodeLeb(v, 8)));

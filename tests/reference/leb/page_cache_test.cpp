@@ -9,7 +9,7 @@ namespace {
 std::function<DecodedPage()> page(std::size_t n, int* decodes) {
   return [n, decodes] {
     ++*decodes;
-    return DecodedPage::deltas(std::vector<std::int16_t>(n, 7));
+    return DecodedPage::deltas(std::vector<std::int16_t>(n, 7), 16);
   };
 }
 
@@ -122,6 +122,19 @@ TEST(PageCache, ValuePagesCostTheirValuesBytes) {
   cache.get(2, [&] { return words; });
   EXPECT_EQ(cache.stats().bytes, 300u);
   EXPECT_EQ(cache.stats().evictions, 0u);
+}
+
+// An 8-bit channel's deltas cost a byte each and read back as they were given, the ends of the
+// two's complement range included; a 16-bit channel's, two.
+TEST(PageCache, DeltaPagesCostAByteADeltaAtEightBits) {
+  const std::vector<std::int16_t> eight{-128, -1, 0, 1, 127}, sixteen{-32768, -129, 128, 32767};
+  const DecodedPage narrow = DecodedPage::deltas(eight, 8), wide = DecodedPage::deltas(sixteen, 16);
+  EXPECT_TRUE(narrow.holdsDeltas());
+  EXPECT_TRUE(wide.holdsDeltas());
+  EXPECT_EQ(narrow.byteSize(), 5u);
+  EXPECT_EQ(wide.byteSize(), 8u);
+  for (std::size_t i = 0; i < eight.size(); ++i) EXPECT_EQ(narrow.delta(i), eight[i]) << i;
+  for (std::size_t i = 0; i < sixteen.size(); ++i) EXPECT_EQ(wide.delta(i), sixteen[i]) << i;
 }
 
 TEST(PageCache, EvictedPagesStayValidForTheirHolders) {
