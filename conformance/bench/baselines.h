@@ -42,6 +42,7 @@ class ZstdFrame {
   std::string packed_, back_;
   Timing compress_;
 };
+
 // xz (liblzma's .xz container, CRC64) at `preset` (0..9).
 BaselineResult xzBaseline(std::string_view raw, std::uint32_t preset);
 // `coder` (one of the above at a level) applied to each piece of `pieceBytes` of `raw` (the last
