@@ -23,26 +23,11 @@ namespace voxref::ref {
 
 class DecodedPage {
  public:
-  // The deltas of a `valueBits`-bit channel (8 or 16), each in that range, as the page decoders
-  // give them (decodePagePositions); kept a byte each at 8 bits.
-  static DecodedPage deltas(std::vector<std::int16_t> deltas, int valueBits) {
-    DecodedPage p;
-    if (valueBits == 8)
-      p.bytes_.assign(deltas.begin(), deltas.end());
-    else
-      p.words_ = std::move(deltas);
-    return p;
-  }
+  DecodedPage() = default;  // no values
+  // `count` deltas of a `valueBits`-bit channel (8 or 16), all 0 until set: a byte each at 8 bits.
+  static DecodedPage deltas(std::size_t count, int valueBits) { return DecodedPage(count, valueBits, false); }
   // `count` values of `valueBits` bits (8 or 16), all 0 until set.
-  static DecodedPage values(std::size_t count, int valueBits) {
-    DecodedPage p;
-    p.holdsValues_ = true;
-    if (valueBits == 8)
-      p.bytes_.assign(count, 0);
-    else
-      p.words_.assign(count, 0);
-    return p;
-  }
+  static DecodedPage values(std::size_t count, int valueBits) { return DecodedPage(count, valueBits, true); }
 
   bool holdsDeltas() const { return !holdsValues_; }
   // A page of deltas: the delta at i.
@@ -54,22 +39,39 @@ class DecodedPage {
     if (bytes_.empty()) return static_cast<std::uint16_t>(words_[i]);
     return isSigned ? static_cast<std::int32_t>(static_cast<std::int8_t>(bytes_[i])) : std::int32_t{bytes_[i]};
   }
-  void setValue(std::size_t i, std::int32_t v) {
+  // The delta or value at i: v in the page's range (a delta of b bits, or a value of b bits, signed
+  // or not), kept modulo 2^b.
+  void set(std::size_t i, std::int32_t v) {
     if (bytes_.empty())
       words_[i] = static_cast<std::int16_t>(v);
     else
       bytes_[i] = static_cast<std::uint8_t>(v);
   }
+  // f(storage): std::uint8_t* to the entries at 8 bits, std::int16_t* at 16, for a writer that sets
+  // many (a store of a value in range through it keeps it as set does; no test per entry).
+  template <class F>
+  void withStorage(F&& f) {
+    if (bytes_.empty())
+      f(words_.data());
+    else
+      f(bytes_.data());
+  }
   // Values (deltas or values) the page holds.
   std::size_t size() const { return bytes_.empty() ? words_.size() : bytes_.size(); }
   // What the page costs the cache: its values' bytes.
   std::size_t byteSize() const { return words_.size() * sizeof(std::int16_t) + bytes_.size(); }
+  bool operator==(const DecodedPage&) const = default;
 
  private:
-  DecodedPage() = default;
+  DecodedPage(std::size_t count, int valueBits, bool holdsValues) : holdsValues_(holdsValues) {
+    if (valueBits == 8)
+      bytes_.assign(count, 0);
+    else
+      words_.assign(count, 0);
+  }
   bool holdsValues_ = false;
-  std::vector<std::int16_t> words_;  // deltas, or 16-bit values
-  std::vector<std::uint8_t> bytes_;  // 8-bit values
+  std::vector<std::int16_t> words_;  // 16-bit deltas or values
+  std::vector<std::uint8_t> bytes_;  // 8-bit deltas or values
 };
 
 }  // namespace voxref::ref

@@ -4,6 +4,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "reference/common/byte_stream.h"
 #include "reference/common/crc32.h"
@@ -86,25 +87,27 @@ PagePlaces pagePlaces(const LebStream& s, const HzOrder& order, std::uint64_t pa
   return p;
 }
 
-// The deltas of a page's points (in the order its reader gives them) at their places.
-std::vector<std::int16_t> placeDeltas(const PagePlaces& p, std::span<const std::int32_t> deltas, std::size_t comps,
-                                      int pageBits) {
-  std::vector<std::int16_t> out((std::size_t{1} << pageBits) * comps, 0);
-  if (p.all) {
-    std::transform(deltas.begin(), deltas.end(), out.begin(),
-                   [](std::int32_t d) { return static_cast<std::int16_t>(d); });
-    return out;
-  }
-  for (std::size_t i = 0; i < p.at.size(); ++i)
-    for (std::size_t k = 0; k < comps; ++k)
-      out[static_cast<std::size_t>(p.at[i]) * comps + k] = static_cast<std::int16_t>(deltas[i * comps + k]);
+// The deltas of a page's points (in the order its reader gives them) at their places, in a page of
+// the channel's width (DecodedPage::deltas).
+DecodedPage placeDeltas(const PagePlaces& p, std::span<const std::int32_t> deltas, std::size_t comps, int pageBits,
+                        int valueBits) {
+  DecodedPage out = DecodedPage::deltas((std::size_t{1} << pageBits) * comps, valueBits);
+  out.withStorage([&](auto* entries) {
+    using Entry = std::remove_pointer_t<decltype(entries)>;
+    if (p.all) {
+      for (std::size_t i = 0; i < deltas.size(); ++i) entries[i] = static_cast<Entry>(deltas[i]);
+      return;
+    }
+    for (std::size_t i = 0; i < p.at.size(); ++i)
+      for (std::size_t k = 0; k < comps; ++k)
+        entries[static_cast<std::size_t>(p.at[i]) * comps + k] = static_cast<Entry>(deltas[i * comps + k]);
+  });
   return out;
 }
 
 }  // namespace
 
-std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
-                                              std::uint64_t page) {
+DecodedPage decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page) {
   LebPageReader reader = openPage(s, c, page);
   const PagePlaces places = pagePlaces(s, order, page);
   const std::size_t comps = static_cast<std::size_t>(c.components);
@@ -112,11 +115,10 @@ std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChann
   std::vector<std::int32_t> deltas(static_cast<std::size_t>(places.points) * comps);
   if (!deltas.empty()) reader.read(deltas);
   finishPage(reader, places.points, c, page);
-  return placeDeltas(places, deltas, comps, s.pageBits);
+  return placeDeltas(places, deltas, comps, s.pageBits, c.valueBits);
 }
 
-std::array<std::vector<std::int16_t>, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order,
-                                                                     std::uint64_t page) {
+std::array<DecodedPage, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order, std::uint64_t page) {
   const LebChannel* data = s.channel(LebChannelKind::Data);
   const LebChannel* gradients = s.channel(LebChannelKind::Gradients);
   if (!data || !gradients)
@@ -144,7 +146,8 @@ std::array<std::vector<std::int16_t>, 2> decodeChannelPagesPositions(const LebSt
   }
   finishPage(a, places.points, *data, page);
   finishPage(*b, places.points, *gradients, page);
-  return {placeDeltas(places, da, ca, s.pageBits), placeDeltas(places, db, cb, s.pageBits)};
+  return {placeDeltas(places, da, ca, s.pageBits, data->valueBits),
+          placeDeltas(places, db, cb, s.pageBits, gradients->valueBits)};
 }
 
 }  // namespace voxref::ref

@@ -14,6 +14,7 @@
 
 #include "reference/common/byte_stream.h"
 #include "reference/leb/adaptive_delta_coder.h"
+#include "reference/leb/decoded_page.h"
 #include "reference/leb/hz_order.h"
 #include "reference/leb/leb_padding.h"
 #include "reference/leb/leb_stream.h"
@@ -81,17 +82,16 @@ LebPageReader openPage(const LebStream& s, const LebChannel& c, std::uint64_t pa
 // lead-1, nothing but the last byte's zero bits).
 void finishPage(const LebPageReader& reader, std::uint64_t points, const LebChannel& c, std::uint64_t page);
 
-// The page's deltas (each fits an int16) placed at their positions: 2^pageBits x components entries, 0 for the padding
-// and for indices past the grid's last point. Throws StreamError for a corrupt page.
-std::vector<std::int16_t> decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order,
-                                              std::uint64_t page);
+// The page's deltas placed at their positions, as LebReader's cache keeps them (DecodedPage::deltas
+// of the channel's width): 2^pageBits x components entries, 0 for the padding and for indices past
+// the grid's last point. Throws StreamError for a corrupt page.
+DecodedPage decodePagePositions(const LebStream& s, const LebChannel& c, const HzOrder& order, std::uint64_t page);
 
 // decodePagePositions of the data page and the gradients page of the same index, {data,
 // gradients}, their lead-1 codes read interleaved (LebPageReader::readBoth: the two chains of
 // lookups run side by side): what random access asks for when a point needs both channels and
 // neither page is cached. The same values and errors as the two calls (the data page's first).
 // Throws std::invalid_argument for a stream without both channels stored.
-std::array<std::vector<std::int16_t>, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order,
-                                                                     std::uint64_t page);
+std::array<DecodedPage, 2> decodeChannelPagesPositions(const LebStream& s, const HzOrder& order, std::uint64_t page);
 
 }  // namespace voxref::ref

@@ -114,14 +114,12 @@ LebReader::Known LebReader::valueAt(unsigned want, const GridPoint& p) {
         if (c.kind == LebChannelKind::Data && (need & 2u) && !stream_->derivedGradients && !contextPages() &&
             !cache_.contains(gradientsKey)) {
           auto both = decodeChannelPagesPositions(*stream_, order_, page);
-          const int gradientBits = channel(LebChannelKind::Gradients).valueBits;
-          cache_.get(gradientsKey, [&] { return DecodedPage::deltas(std::move(both[1]), gradientBits); });
-          decoded = cache_.get(key, [&] { return DecodedPage::deltas(std::move(both[0]), c.valueBits); });
+          cache_.get(gradientsKey, [&] { return std::move(both[1]); });
+          decoded = cache_.get(key, [&] { return std::move(both[0]); });
         } else if (contextPages()) {
           decoded = cache_.get(key, [&] { return decodeContextPage(c, page); });
         } else {
-          decoded = cache_.get(
-              key, [&] { return DecodedPage::deltas(decodePagePositions(*stream_, c, order_, page), c.valueBits); });
+          decoded = cache_.get(key, [&] { return decodePagePositions(*stream_, c, order_, page); });
         }
         cached = decoded.get();
       }
@@ -156,7 +154,7 @@ DecodedPage LebReader::decodeContextPage(const LebChannel& c, std::uint64_t page
   const auto comps = static_cast<std::size_t>(c.components);
   DecodedPage values = DecodedPage::values((std::size_t{1} << stream_->pageBits) * comps, c.valueBits);
   const auto get = [&](std::size_t i) { return values.value(i, c.isSigned); };
-  const auto set = [&](std::size_t i, std::int32_t v) { values.setValue(i, v); };
+  const auto set = [&](std::size_t i, std::int32_t v) { values.set(i, v); };
   // A corner is coarser than its point: decoded before it in this page, or in an earlier page
   // (through the cache, recursively). Only a page that holds a coarser scale than its last point's
   // can hold corners of its points (contextPagesNeededBelow names the page itself then). The place

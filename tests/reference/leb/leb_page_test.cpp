@@ -24,7 +24,7 @@ LebStream smoothStream(const Dims3& dims, int pageBits, LebCoder coder) {
 
 // What the two calls give, the data page's first; an error as its message.
 struct PageOutcome {
-  std::array<std::vector<std::int16_t>, 2> pages;
+  std::array<DecodedPage, 2> pages;
   std::string error;
   bool operator==(const PageOutcome&) const = default;
 };

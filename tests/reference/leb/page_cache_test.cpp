@@ -1,5 +1,7 @@
 #include "reference/leb/page_cache.h"
 
+#include <vector>
+
 #include <gtest/gtest.h>
 
 namespace voxref::ref {
@@ -9,7 +11,9 @@ namespace {
 std::function<DecodedPage()> page(std::size_t n, int* decodes) {
   return [n, decodes] {
     ++*decodes;
-    return DecodedPage::deltas(std::vector<std::int16_t>(n, 7), 16);
+    DecodedPage deltas = DecodedPage::deltas(n, 16);
+    for (std::size_t i = 0; i < n; ++i) deltas.set(i, 7);
+    return deltas;
   };
 }
 
@@ -107,14 +111,14 @@ TEST(PageCache, APageLargerThanTheBudgetIsHandedOutButNotKept) {
 // two at 16.
 TEST(PageCache, ValuePagesCostTheirValuesBytes) {
   DecodedPage bytes = DecodedPage::values(100, 8);
-  bytes.setValue(0, 200);
-  bytes.setValue(1, -3);
+  bytes.set(0, 200);
+  bytes.set(1, -3);
   EXPECT_FALSE(bytes.holdsDeltas());
   EXPECT_EQ(bytes.value(0, false), 200);
   EXPECT_EQ(bytes.value(1, true), -3);
   EXPECT_EQ(bytes.value(2, true), 0);
   DecodedPage words = DecodedPage::values(100, 16);
-  words.setValue(5, 65535);
+  words.set(5, 65535);
   EXPECT_EQ(words.value(5, false), 65535);
   PageCache cache(300);
   cache.get(1, [&] { return bytes; });
@@ -128,7 +132,9 @@ TEST(PageCache, ValuePagesCostTheirValuesBytes) {
 // two's complement range included; a 16-bit channel's, two.
 TEST(PageCache, DeltaPagesCostAByteADeltaAtEightBits) {
   const std::vector<std::int16_t> eight{-128, -1, 0, 1, 127}, sixteen{-32768, -129, 128, 32767};
-  const DecodedPage narrow = DecodedPage::deltas(eight, 8), wide = DecodedPage::deltas(sixteen, 16);
+  DecodedPage narrow = DecodedPage::deltas(eight.size(), 8), wide = DecodedPage::deltas(sixteen.size(), 16);
+  for (std::size_t i = 0; i < eight.size(); ++i) narrow.set(i, eight[i]);
+  for (std::size_t i = 0; i < sixteen.size(); ++i) wide.set(i, sixteen[i]);
   EXPECT_TRUE(narrow.holdsDeltas());
   EXPECT_TRUE(wide.holdsDeltas());
   EXPECT_EQ(narrow.byteSize(), 5u);
