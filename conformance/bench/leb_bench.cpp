@@ -89,7 +89,7 @@ class WholeDecodeOutputs {
  public:
   explicit WholeDecodeOutputs(const ref::LebStream& s) : stream_(s) {
     const std::size_t n = ref::sampleCount(s.dims);
-    if (s.sampleBits <= 8) {
+    if (s.sampleBits == 8) {
       data8_.resize(n);
     } else {
       data16_.resize(n);
