@@ -53,16 +53,21 @@ class IsoTarget {
     const std::size_t n = static_cast<std::size_t>(width_) * height_;
     out.width = width_;
     out.height = height_;
-    out.rgba.resize(n);
+    readColour(out.rgba);
     out.windowDepth.resize(n);
     out.primitive.resize(n);
-    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, out.rgba.data());
     gl_->ReadBuffer(GL_COLOR_ATTACHMENT1);
     gl_->ReadPixels(0, 0, width_, height_, GL_RED_INTEGER, GL_UNSIGNED_INT, out.primitive.data());
     gl_->ReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, out.windowDepth.data());
     checkGl(*gl_, "reading back the isosurface image");
+  }
+  // The colour attachment alone, row 0 at the bottom.
+  void readColour(std::vector<std::array<std::uint8_t, 4>>& rgba) const {
+    rgba.resize(static_cast<std::size_t>(width_) * height_);
+    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_->ReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+    checkGl(*gl_, "reading back the isosurface image's colour");
   }
 
  private:
@@ -142,16 +147,20 @@ void appendBox(const QueryBox& b, std::vector<float>& out) {
 
 using namespace iso_gl_parts;
 
-// The mesh program with the mesh's vertex array (positions at 0, normals at 1, the indices), and
-// for the occlusion tests the depth-only program (the mesh's depth and the query boxes), the
-// counting program and buffer, and the boxes' vertex array (positions at 0); programs are made
-// when first needed.
+// The mesh program with the mesh's vertex array (positions at 0, normals at 1, the indices), the
+// display program (the same colour, no primitive ids; made with the mesh program, so that a frame
+// loop's first display does not link it), and for the occlusion tests the depth-only program (the
+// mesh's depth and the query boxes), the counting program and buffer, and the boxes' vertex array
+// (positions at 0); the occlusion tests' programs are made when first needed.
 struct IsoMeshRenderer::State {
   State(Context& c, std::string_view fragmentSource)
       : context(c),
         gl(c.gl()),
         meshProgram(gl, c.info().glslNumber, shaders::kIsoMeshVert,
-                    fragmentSource.empty() ? shaders::kIsoMeshFrag : fragmentSource, "iso_mesh.frag"),
+                    fragmentSource.empty() ? shaders::kIsoMeshFrag : fragmentSource, "iso_mesh.frag",
+                    shaders::kIsoShadingGlsl),
+        displayProgram(gl, c.info().glslNumber, shaders::kIsoMeshVert, shaders::kIsoMeshDisplayFrag,
+                       "iso_mesh_display.frag", shaders::kIsoShadingGlsl),
         meshVao(gl),
         positions(gl, GL_ARRAY_BUFFER),
         normals(gl, GL_ARRAY_BUFFER),
@@ -186,11 +195,12 @@ struct IsoMeshRenderer::State {
     return *target;
   }
 
-  void drawMesh(const ref::ViewCamera& camera) const {
-    useWithCamera(meshProgram, camera);
-    gl.Uniform3f(meshProgram.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
+  // The loaded mesh shaded (iso_shading.glsl) by `program`: the mesh program or the display one.
+  void drawMesh(const Program& program, const ref::ViewCamera& camera) const {
+    useWithCamera(program, camera);
+    gl.Uniform3f(program.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
                  static_cast<float>(camera.eye.z));
-    gl.Uniform1f(meshProgram.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
+    gl.Uniform1f(program.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
     drawMeshTriangles("drawing the isosurface mesh");
   }
 
@@ -265,7 +275,7 @@ struct IsoMeshRenderer::State {
 
   Context& context;
   const GlApi& gl;
-  Program meshProgram;
+  Program meshProgram, displayProgram;
   VertexArray meshVao;
   GrowingBuffer positions, normals, indices;
   GLsizei indexCount = 0;
@@ -296,10 +306,21 @@ IsoImageGl IsoMeshRenderer::render(const ref::ViewCamera& camera) {
   ref::cameraBasis(camera);  // validates
   const IsoTarget& target = s.targetFor(camera);
   clearTarget(s.gl);
-  s.drawMesh(camera);
+  s.drawMesh(s.meshProgram, camera);
   IsoImageGl out;
   target.read(out);
   return out;
+}
+
+std::vector<std::array<std::uint8_t, 4>> IsoMeshRenderer::display(const ref::ViewCamera& camera) {
+  State& s = *state_;
+  ref::cameraBasis(camera);  // validates
+  const IsoTarget& target = s.targetFor(camera);
+  clearTarget(s.gl);
+  s.drawMesh(s.displayProgram, camera);
+  std::vector<std::array<std::uint8_t, 4>> rgba;
+  target.readColour(rgba);
+  return rgba;
 }
 
 std::vector<std::uint32_t> IsoMeshRenderer::occlusionQueries(const std::vector<QueryBox>& boxes,

@@ -93,11 +93,16 @@ class IsoMeshRenderer {
   IsoMeshRenderer(const IsoMeshRenderer&) = delete;
   IsoMeshRenderer& operator=(const IsoMeshRenderer&) = delete;
 
-  // Makes `mesh` the one that render() draws and occlusionQueries() tests against.
+  // Makes `mesh` the one that render() and display() draw and occlusionQueries() tests against.
   void load(const ref::IsoMesh& mesh);
   // The loaded mesh (none: an empty image) from `camera`. Throws GlUnsupported when the size
   // exceeds GL_MAX_RENDERBUFFER_SIZE.
   IsoImageGl render(const ref::ViewCamera& camera);
+  // The loaded mesh from `camera` as a display shows it: render()'s colour image alone (row 0 at the
+  // bottom), drawn by a program that does not read gl_PrimitiveID (iso_mesh_display.frag, the same
+  // shading). What a frame loop times; the oracles judge render()'s image of the same mesh. Throws
+  // as render() does.
+  std::vector<std::array<std::uint8_t, 4>> display(const ref::ViewCamera& camera);
   // occlusionQueriesGl with the loaded mesh as occluder.
   std::vector<std::uint32_t> occlusionQueries(const std::vector<QueryBox>& boxes, const ref::ViewCamera& camera,
                                               SampleCounter counter = SampleCounter::Queries);

@@ -126,8 +126,9 @@ BenchTable table2(const BenchOptions& o, gpu::Context& gl, const std::vector<Iso
             formatNumber("%.1f", scenes.front().budget.threshold) + " px, at most " +
             std::to_string(scenes.front().budget.maxSplits) +
             " splits per frame). Frame time = occlusion queries + refinement + extraction from the compressed stream + "
-            "GL drawing (llvmpipe), "
-            "not the Embree ground truth. 'paper + verification' also tests the culled boxes against the frame just "
+            "GL drawing (llvmpipe: the mesh uploaded, drawn and its colour image read back, as a display shows it), "
+            "not the oracles' work (GL's image with primitive ids and depth, drawn after it, and the Embree ground "
+            "truth). 'paper + verification' also tests the culled boxes against the frame just "
             "extracted and "
             "refines again where a cull shows (conformance/modules/iso/iso_session.h). False culls: culled diamonds "
             "that the Embree item buffer of the same frame shows visible. "

@@ -75,6 +75,27 @@ TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
   }
 }
 
+// display() draws the frame's image with a program of its own (iso_mesh_display.frag), the same
+// shading function without gl_PrimitiveID: on llvmpipe, the same colours as render()'s, pixel for
+// pixel, for each mesh; and a display in between leaves render()'s images as a fresh renderer's.
+TEST_F(IsoGl, ADisplayedFrameIsTheColourOfTheOraclesImage) {
+  IsoMeshRenderer renderer(*context_);
+  const ref::IsoMesh meshes[] = {strip(20, 0.0f), strip(3, 1.0f), ref::IsoMesh{}, strip(57, -1.0f)};
+  const ref::ViewCamera cameras[] = {camera(64, 48), camera(64, 48), camera(64, 48), camera(40, 30)};
+  for (std::size_t i = 0; i < 4; ++i) {
+    renderer.load(meshes[i]);
+    const std::vector<std::array<std::uint8_t, 4>> shown = renderer.display(cameras[i]);
+    const IsoImageGl judged = renderer.render(cameras[i]);
+    EXPECT_EQ(shown, judged.rgba) << "mesh " << i;
+    const std::size_t lit =
+        std::count_if(shown.begin(), shown.end(), [](const std::array<std::uint8_t, 4>& p) { return p[3] != 0; });
+    EXPECT_EQ(lit == 0, meshes[i].indices.empty()) << "mesh " << i;
+    (void)renderer.display(cameras[i]);
+    expectSameImage(renderer.render(cameras[i]), renderIsoMeshGl(*context_, meshes[i], cameras[i]),
+                    "mesh " + std::to_string(i) + " after a display");
+  }
+}
+
 TEST_F(IsoGl, QueriesTestAgainstTheMeshLoadedLast) {
   IsoMeshRenderer renderer(*context_);
   const ref::ViewCamera c = camera(64, 48);

@@ -9,8 +9,10 @@
 //   3. extraction from the compressed stream (pages decoded on demand), incremental: only the
 //      leaf tetrahedra that were not leaves the frame before are read (reference/iso/
 //      incremental_extraction.h; the same mesh as extracting the whole mesh again);
-//   4. the GL image of the mesh, and Embree's image of the same mesh (fixtures/), whose item
-//      buffer says which diamonds are visible: the ground truth the culling is judged by.
+//   4. the GL image of the mesh as a display shows it (timed: IsoMeshRenderer::display); then,
+//      for the oracles and outside the frame's time, its GL image with primitive ids and depth
+//      (render) and Embree's image of the same mesh (fixtures/), whose item buffer says which
+//      diamonds are visible: the ground truth the culling is judged by.
 // Query boxes are the diamonds' boxes clipped to the volume and grown by kQueryBoxMargin grid
 // units on every side: DEPTH32F quantizes window depth to 2^-24 near 1, which at the scenes'
 // distances (z <= 4 radii, n = 0.5) is below 1e-3 grid units of eye depth, so the margin keeps a
