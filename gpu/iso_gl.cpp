@@ -195,13 +195,18 @@ struct IsoMeshRenderer::State {
     return *target;
   }
 
-  // The loaded mesh shaded (iso_shading.glsl) by `program`: the mesh program or the display one.
-  void drawMesh(const Program& program, const ref::ViewCamera& camera) const {
+  // The camera's target, cleared, with the loaded mesh drawn on it by `program` (the mesh program
+  // or the display one: iso_shading.glsl's colour); bound, for reading back.
+  const IsoTarget& drawMesh(const Program& program, const ref::ViewCamera& camera) {
+    ref::cameraBasis(camera);  // validates
+    const IsoTarget& drawn = targetFor(camera);
+    clearTarget(gl);
     useWithCamera(program, camera);
     gl.Uniform3f(program.uniform("uEye"), static_cast<float>(camera.eye.x), static_cast<float>(camera.eye.y),
                  static_cast<float>(camera.eye.z));
     gl.Uniform1f(program.uniform("uAmbient"), static_cast<float>(ref::kIsoAmbient));
     drawMeshTriangles("drawing the isosurface mesh");
+    return drawn;
   }
 
   // The samples of the first `boxes` boxes in the box buffer, a query and a draw each.
@@ -303,23 +308,15 @@ void IsoMeshRenderer::load(const ref::IsoMesh& mesh) {
 
 IsoImageGl IsoMeshRenderer::render(const ref::ViewCamera& camera) {
   State& s = *state_;
-  ref::cameraBasis(camera);  // validates
-  const IsoTarget& target = s.targetFor(camera);
-  clearTarget(s.gl);
-  s.drawMesh(s.meshProgram, camera);
   IsoImageGl out;
-  target.read(out);
+  s.drawMesh(s.meshProgram, camera).read(out);
   return out;
 }
 
 std::vector<std::array<std::uint8_t, 4>> IsoMeshRenderer::display(const ref::ViewCamera& camera) {
   State& s = *state_;
-  ref::cameraBasis(camera);  // validates
-  const IsoTarget& target = s.targetFor(camera);
-  clearTarget(s.gl);
-  s.drawMesh(s.displayProgram, camera);
   std::vector<std::array<std::uint8_t, 4>> rgba;
-  target.readColour(rgba);
+  s.drawMesh(s.displayProgram, camera).readColour(rgba);
   return rgba;
 }
 

@@ -56,22 +56,34 @@ void expectSameImage(const IsoImageGl& a, const IsoImageGl& b, const std::string
   EXPECT_EQ(a.windowDepth, b.windowDepth) << what;
 }
 
+// What a reused renderer is given in turn: meshes larger, smaller (the buffers keep their storage),
+// empty, then larger than any before (they grow); the last camera changes the target's size.
+struct Load {
+  ref::IsoMesh mesh;
+  ref::ViewCamera camera;
+};
+std::vector<Load> loadsInTurn() {
+  return {{strip(20, 0.0f), camera(64, 48)},
+          {strip(3, 1.0f), camera(64, 48)},
+          {ref::IsoMesh{}, camera(64, 48)},
+          {strip(57, -1.0f), camera(40, 30)}};
+}
+
 TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
   IsoMeshRenderer renderer(*context_);
-  // Larger, smaller (the buffers keep their storage), empty, then larger than any before (they grow);
-  // the last camera changes the target's size.
-  const ref::IsoMesh meshes[] = {strip(20, 0.0f), strip(3, 1.0f), ref::IsoMesh{}, strip(57, -1.0f)};
-  const ref::ViewCamera cameras[] = {camera(64, 48), camera(64, 48), camera(64, 48), camera(40, 30)};
-  for (std::size_t i = 0; i < 4; ++i) {
-    renderer.load(meshes[i]);
-    const IsoImageGl reused = renderer.render(cameras[i]);
-    const IsoImageGl fresh = renderIsoMeshGl(*context_, meshes[i], cameras[i]);
+  const std::vector<Load> loads = loadsInTurn();
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const ref::IsoMesh& mesh = loads[i].mesh;
+    const ref::ViewCamera& view = loads[i].camera;
+    renderer.load(mesh);
+    const IsoImageGl reused = renderer.render(view);
+    const IsoImageGl fresh = renderIsoMeshGl(*context_, mesh, view);
     expectSameImage(reused, fresh, "mesh " + std::to_string(i));
     // The image shows the mesh: triangles of this mesh were drawn (ids up to its count), none beyond.
     std::uint32_t highest = 0;
     for (std::uint32_t id : reused.primitive) highest = std::max(highest, id);
-    EXPECT_EQ(highest == 0, meshes[i].indices.empty()) << "mesh " << i;
-    EXPECT_LE(highest, meshes[i].triangleCount()) << "mesh " << i;
+    EXPECT_EQ(highest == 0, mesh.indices.empty()) << "mesh " << i;
+    EXPECT_LE(highest, mesh.triangleCount()) << "mesh " << i;
   }
 }
 
@@ -80,18 +92,19 @@ TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
 // pixel, for each mesh; and a display in between leaves render()'s images as a fresh renderer's.
 TEST_F(IsoGl, ADisplayedFrameIsTheColourOfTheOraclesImage) {
   IsoMeshRenderer renderer(*context_);
-  const ref::IsoMesh meshes[] = {strip(20, 0.0f), strip(3, 1.0f), ref::IsoMesh{}, strip(57, -1.0f)};
-  const ref::ViewCamera cameras[] = {camera(64, 48), camera(64, 48), camera(64, 48), camera(40, 30)};
-  for (std::size_t i = 0; i < 4; ++i) {
-    renderer.load(meshes[i]);
-    const std::vector<std::array<std::uint8_t, 4>> shown = renderer.display(cameras[i]);
-    const IsoImageGl judged = renderer.render(cameras[i]);
+  const std::vector<Load> loads = loadsInTurn();
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    const ref::IsoMesh& mesh = loads[i].mesh;
+    const ref::ViewCamera& view = loads[i].camera;
+    renderer.load(mesh);
+    const std::vector<std::array<std::uint8_t, 4>> shown = renderer.display(view);
+    const IsoImageGl judged = renderer.render(view);
     EXPECT_EQ(shown, judged.rgba) << "mesh " << i;
     const std::size_t lit =
         std::count_if(shown.begin(), shown.end(), [](const std::array<std::uint8_t, 4>& p) { return p[3] != 0; });
-    EXPECT_EQ(lit == 0, meshes[i].indices.empty()) << "mesh " << i;
-    (void)renderer.display(cameras[i]);
-    expectSameImage(renderer.render(cameras[i]), renderIsoMeshGl(*context_, meshes[i], cameras[i]),
+    EXPECT_EQ(lit == 0, mesh.indices.empty()) << "mesh " << i;
+    (void)renderer.display(view);
+    expectSameImage(renderer.render(view), renderIsoMeshGl(*context_, mesh, view),
                     "mesh " + std::to_string(i) + " after a display");
   }
 }
