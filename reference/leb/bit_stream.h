@@ -51,9 +51,15 @@ class BitReader {
   // values take 1 to 10 bits, so a test of what is left branched at no pattern a predictor learns,
   // and a refill of the buffer that still holds its bits changes nothing (docs/leb.md).
   void skip(int n) {
+    consume(n);
+    refill();
+  }
+  // skip without the refill, for a caller that refills (refill()) before it can peek past the bits
+  // left: a refill leaves at least 56 bits (zeros past the end count), so values whose lengths sum
+  // to at most 56 can be peeked and consumed between two refills.
+  void consume(int n) {
     buf_ <<= n;
     avail_ -= n;
-    refill();
   }
   std::uint32_t get(int n) {
     if (n == 0) return 0;
@@ -65,8 +71,7 @@ class BitReader {
   // next_, so those are the consumed ones and the avail_ still in buf_.
   std::size_t bitsConsumed() const { return 8 * next_ - static_cast<std::size_t>(avail_); }
   bool overrun() const { return bitsConsumed() > size_ * 8; }
-
- private:
+  // Tops the buffer up to at least 56 bits.
   void refill() {
     if (next_ + 8 <= size_) {
       // Eight bytes at once, most significant first. Bits beyond the whole bytes counted are the
@@ -87,6 +92,8 @@ class BitReader {
       avail_ += 8;
     }
   }
+
+ private:
   const unsigned char* p_;
   std::size_t size_;
   std::size_t next_ = 0;

@@ -125,6 +125,9 @@ Lead1Decoder::Lead1Decoder(const Lead1Code& code) : valueBits_(code.valueBits), 
   }
   for (std::size_t at = 0; at < fast_.size(); ++at)
     if (pairs[at] != 0) fast_[at] = pairs[at];
+  std::uint32_t longest = 1;
+  for (const std::uint32_t e : fast_) longest = std::max(longest, e & 31);
+  lookupsPerRefill_ = std::max(1, 56 / static_cast<int>(longest));
 }
 
 void Lead1Decoder::decodePage(std::string_view page, std::span<std::int32_t> out, std::size_t streamOffset,
@@ -138,13 +141,34 @@ Lead1PageReader::Lead1PageReader(const Lead1Decoder& decoder, std::string_view p
                                  std::string what)
     : decoder_(&decoder), page_(page), in_(page), streamOffset_(streamOffset), what_(std::move(what)) {}
 
+template <int K>
+void Lead1PageReader::lookupRuns(const Lead1Decoder& d, BitReader& in, int& context, std::span<std::int32_t> out,
+                                 std::size_t& i) {
+  while (i + 2 * K <= out.size()) {
+    for (int k = 0; k < K; ++k) {
+      const std::uint32_t e = d.fastEntry(context, in.peek(Lead1Decoder::kFastBits));
+      if (e == 0) {
+        in.refill();
+        return;
+      }
+      fastStep<false>(e, in, context, out.data(), i);
+    }
+    in.refill();
+  }
+}
+
 void Lead1PageReader::read(std::span<std::int32_t> out) {
   std::size_t i = 0;
+  const int perRefill = decoder_->lookupsPerRefill();
   while (i < out.size()) {
     // A run of one-lookup values on local copies (registers), then one value by the table path.
     BitReader in = in_;
     int context = context_;
     const std::size_t start = i;
+    if (perRefill >= 3)
+      lookupRuns<3>(*decoder_, in, context, out, i);
+    else if (perRefill == 2)
+      lookupRuns<2>(*decoder_, in, context, out, i);
     while (i < out.size()) {
       const std::uint32_t e = decoder_->fastEntry(context, in.peek(Lead1Decoder::kFastBits));
       if (e == 0) break;
@@ -158,9 +182,31 @@ void Lead1PageReader::read(std::span<std::int32_t> out) {
   }
 }
 
+template <int K>
+void Lead1PageReader::lookupRunsBoth(const Lead1Decoder& da, BitReader& inA, int& contextA,
+                                     std::span<std::int32_t> outA, std::size_t& i, const Lead1Decoder& db,
+                                     BitReader& inB, int& contextB, std::span<std::int32_t> outB, std::size_t& j) {
+  while (i + 2 * K <= outA.size() && j + 2 * K <= outB.size()) {
+    for (int k = 0; k < K; ++k) {
+      const std::uint32_t ea = da.fastEntry(contextA, inA.peek(Lead1Decoder::kFastBits));
+      const std::uint32_t eb = db.fastEntry(contextB, inB.peek(Lead1Decoder::kFastBits));
+      if (ea == 0 || eb == 0) {
+        inA.refill();
+        inB.refill();
+        return;
+      }
+      fastStep<false>(ea, inA, contextA, outA.data(), i);
+      fastStep<false>(eb, inB, contextB, outB.data(), j);
+    }
+    inA.refill();
+    inB.refill();
+  }
+}
+
 void Lead1PageReader::readBoth(Lead1PageReader& a, std::span<std::int32_t> outA, Lead1PageReader& b,
                                std::span<std::int32_t> outB) {
   std::size_t i = 0, j = 0;
+  const int perRefill = std::min(a.decoder_->lookupsPerRefill(), b.decoder_->lookupsPerRefill());
   std::exception_ptr bFailed;  // b's error waits for the rest of a, whose own error comes first
   // Runs of one-lookup values of both pages on local copies, while each has room for a pair; a run
   // ends where either page's next value needs the table path.
@@ -169,6 +215,10 @@ void Lead1PageReader::readBoth(Lead1PageReader& a, std::span<std::int32_t> outA,
     int contextA = a.context_, contextB = b.context_;
     const std::size_t i0 = i, j0 = j;
     bool tableA = false, tableB = false;
+    if (perRefill >= 3)
+      lookupRunsBoth<3>(*a.decoder_, inA, contextA, outA, i, *b.decoder_, inB, contextB, outB, j);
+    else if (perRefill == 2)
+      lookupRunsBoth<2>(*a.decoder_, inA, contextA, outA, i, *b.decoder_, inB, contextB, outB, j);
     while (i + 1 < outA.size() && j + 1 < outB.size()) {
       const std::uint32_t ea = a.decoder_->fastEntry(contextA, inA.peek(Lead1Decoder::kFastBits));
       const std::uint32_t eb = b.decoder_->fastEntry(contextB, inB.peek(Lead1Decoder::kFastBits));

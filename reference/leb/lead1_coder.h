@@ -114,6 +114,9 @@ class Lead1Decoder {
     return fast_[(static_cast<std::size_t>(context) << kFastBits) | peeked];
   }
   static int symbolOf(std::uint32_t e) { return static_cast<int>((e >> 5) & 31); }
+  // How many one-lookup entries can follow each other between two refills of a BitReader (which
+  // leaves at least 56 bits): 56 over the longest entry's length (e & 31), at least 1.
+  int lookupsPerRefill() const { return lookupsPerRefill_; }
   // The delta of a one-value entry e whose value starts at the reader's next bit.
   static std::int32_t deltaOf(std::uint32_t e, const BitReader& in) {
     return (e & kWholeValue) ? wholeDelta(e) : fastDelta(e, in.peek(static_cast<int>(e & 31)));
@@ -134,6 +137,7 @@ class Lead1Decoder {
   int symbols_;
   std::vector<HuffmanDecodeTable> tables_;
   std::vector<std::uint32_t> fast_;
+  int lookupsPerRefill_ = 1;
 };
 
 // Reads the deltas of one page one at a time, for a decoder that does not know in advance how
@@ -169,6 +173,8 @@ class Lead1PageReader {
  private:
   std::int32_t nextByTable();  // the code by its table, then sign and magnitude
   // The value (or pair) of a nonzero fast entry e into out[i] (and out[i + 1]), past its bits.
+  // Refill false: the caller refills (lookupRuns, lookupRunsBoth).
+  template <bool Refill = true>
   static void fastStep(std::uint32_t e, BitReader& in, int& context, std::int32_t* out, std::size_t& i) {
     if (e & Lead1Decoder::kPair) {
       out[i] = Lead1Decoder::pairFirst(e);
@@ -177,9 +183,22 @@ class Lead1PageReader {
     } else {
       out[i++] = Lead1Decoder::deltaOf(e, in);
     }
-    in.skip(static_cast<int>(e & 31));
+    if constexpr (Refill)
+      in.skip(static_cast<int>(e & 31));
+    else
+      in.consume(static_cast<int>(e & 31));
     context = Lead1Decoder::symbolOf(e);
   }
+  // read's runs of one-lookup values, K lookups between two refills of the bits, while the output
+  // has room for K pairs; stops before a lookup that needs the table path.
+  template <int K>
+  static void lookupRuns(const Lead1Decoder& d, BitReader& in, int& context, std::span<std::int32_t> out,
+                         std::size_t& i);
+  // The same for two pages at once (readBoth), while both have room.
+  template <int K>
+  static void lookupRunsBoth(const Lead1Decoder& da, BitReader& inA, int& contextA, std::span<std::int32_t> outA,
+                             std::size_t& i, const Lead1Decoder& db, BitReader& inB, int& contextB,
+                             std::span<std::int32_t> outB, std::size_t& j);
   // Takes over the state after a run of `values` one-lookup values decoded on local copies.
   void commitRun(const BitReader& in, int context, std::size_t values) {
     in_ = in;

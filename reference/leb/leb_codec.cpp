@@ -8,6 +8,7 @@
 #include <optional>
 #include <span>
 #include <stdexcept>
+#include <tuple>
 #include <type_traits>
 #include <vector>
 
@@ -85,6 +86,16 @@ InsideValues insideOf(const Span& v, LebChannelKind kind) {
   return r;
 }
 
+// The prediction's components of the point at volume index vi of `values` (componentsOf<T> a
+// point) from its split edge's endpoints vi +- off, both inside the volume.
+template <class T>
+void predictBetween(const T* values, std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) {
+  constexpr int K = componentsOf<T>();
+  const T* a = values + K * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
+  const T* b = values + K * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
+  for (int k = 0; k < K; ++k) pred[k] = predictMidpoint(a[k], b[k]);
+}
+
 // The values one channel's predictions read: `values` (those of `inside`, as their type, whose
 // component count is fixed at compile time) and the channel's shell of the padding.
 template <class T>
@@ -94,11 +105,7 @@ struct ChannelValues {
   const LebPadding& padding;
   const InsideValues& inside;
   // The prediction's components from the split edge's endpoints vi +- off, both inside the volume.
-  void between(std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) const {
-    const T* a = values + kValues * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) + off);
-    const T* b = values + kValues * static_cast<std::size_t>(static_cast<std::ptrdiff_t>(vi) - off);
-    for (int k = 0; k < kValues; ++k) pred[k] = predictMidpoint(a[k], b[k]);
-  }
+  void between(std::size_t vi, std::ptrdiff_t off, std::int32_t* pred) const { predictBetween(values, vi, off, pred); }
   // The prediction of p (of `level`, scale 2^scaleLog2, odd axes `odd`) whose split edge reaches
   // the padding.
   void onShell(const GridPoint& p, int level, int scaleLog2, unsigned odd, std::int32_t* pred) const {
@@ -147,7 +154,10 @@ struct SampleAndGradientValues {
 // all lie inside the volume (its far cells' far edges do) is predicted without a check per point,
 // the others check each point, and a group's points are handed over in one call. The other parts
 // go a point at a time (HzOrder::forEachInside). The same points in the same order, with the same
-// predictions, either way.
+// predictions, either way. A consumer with a member within(h, base, pointOffset, edgeOffset, n)
+// takes the groups whose edges lie inside the volume as their tables instead: point q at volume
+// index base + pointOffset[q], its edge's endpoints at +- edgeOffset[q] (the decoder predicts and
+// stores each point in one step, without the arrays between them).
 template <class Channels, class PointsOf>
 void walkPoints(const HzOrder& order, const Dims3& dims, const Channels& channels, std::uint64_t begin,
                 std::uint64_t end, PointsOf&& pointsOf) {
@@ -211,6 +221,12 @@ void walkPoints(const HzOrder& order, const Dims3& dims, const Channels& channel
         within = within && g.base[a] + 4 * h < dims[a];
       }
       const std::ptrdiff_t baseIndex = g.base[0] + g.base[1] * stride[1] + g.base[2] * stride[2];
+      if constexpr (requires { pointsOf.within(g.h, baseIndex, pointOffset, edgeOffset, 0); }) {
+        if (within) [[likely]] {
+          pointsOf.within(g.h, baseIndex, pointOffset + g.first, edgeOffset + g.first, g.last - g.first);
+          return;
+        }
+      }
       std::size_t vi[HzOrder::CellGroup::kMaxPoints];
       std::int32_t pred[HzOrder::CellGroup::kMaxPoints * Components];
       int n = 0;
@@ -302,16 +318,59 @@ struct ChannelStore {
     taken += values;
     return all.data() + (taken - values);
   }
-  // The point at volume index vi: its prediction plus its delta, as the output type takes the sum.
-  // The components are summed before any is stored: a store through the output (a character type)
-  // may alias the predictions and deltas, which would otherwise be loaded again after each store.
-  void store(std::size_t vi, const std::int32_t* pred, const std::int32_t* delta) const {
+  // The point at volume index vi of out: its prediction plus its delta, as the output type takes
+  // the sum. A store through the output (a character type) may alias anything, so the callers'
+  // loops hold what they keep in locals (out, m), and a point's components are summed before any
+  // is stored: otherwise they would be loaded again after each store.
+  static void storePoint(T* out, std::uint32_t m, std::size_t vi, const std::int32_t* pred, const std::int32_t* delta) {
     std::array<T, kComponents> sum;
-    for (std::size_t c = 0; c < sum.size(); ++c) sum[c] = storedValue<T>(pred[c] + delta[c], mask);
-    std::copy_n(sum.data(), kComponents, target + kComponents * vi);
+    for (std::size_t c = 0; c < sum.size(); ++c) sum[c] = storedValue<T>(pred[c] + delta[c], m);
+    std::copy_n(sum.data(), kComponents, out + kComponents * vi);
+  }
+  // The n points at volume indices vi[q], each one's prediction at pred + predStride q, their
+  // deltas the next n kComponents of delta.
+  void store(int n, const std::size_t* vi, const std::int32_t* pred, int predStride, const std::int32_t* delta) const {
+    T* const out = target;
+    const std::uint32_t m = mask;
+    for (int q = 0; q < n; ++q, pred += predStride, delta += kComponents) storePoint(out, m, vi[q], pred, delta);
+  }
+  // The same for the n points of a group whose split edges lie inside the volume (walkPoints'
+  // within): point q at volume index base + pointOffset[q], predicted from its edge's endpoints at
+  // +- edgeOffset[q] in the target itself, which holds the coarser points (the decoder's
+  // predictions read its outputs: withSegment).
+  void storeWithin(int n, std::ptrdiff_t base, const std::ptrdiff_t* pointOffset, const std::ptrdiff_t* edgeOffset) {
+    T* const out = target;
+    const std::uint32_t m = mask;
+    const std::int32_t* delta = take(n);
+    for (int q = 0; q < n; ++q, delta += kComponents) {
+      const auto vi = static_cast<std::size_t>(base + pointOffset[q]);
+      std::int32_t pred[kComponents];
+      predictBetween(out, vi, edgeOffset[q], pred);
+      storePoint(out, m, vi, pred, delta);
+    }
   }
   void finish() const {
     if (taken != all.size()) throw std::logic_error("LEB decode: the walk met fewer points than countInside");
+  }
+};
+
+// What the walk of a segment hands its points to (walkPoints' pointsOf): each point's prediction
+// plus its delta, stored by the channels' stores (in the order of the channels' predictions).
+template <class Channels, class... Stores>
+struct SegmentStores {
+  std::tuple<Stores&...> stores;
+  void operator()(std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
+    std::apply(
+        [&](auto&... s) {
+          int at = 0;  // the channel's first prediction of a point
+          ((s.store(n, vi, pred + at, Channels::kValues, s.take(n)), at += std::decay_t<decltype(s)>::kComponents),
+           ...);
+        },
+        stores);
+  }
+  void within(std::uint64_t, std::ptrdiff_t base, const std::ptrdiff_t* pointOffset, const std::ptrdiff_t* edgeOffset,
+              int n) {
+    std::apply([&](auto&... s) { (s.storeWithin(n, base, pointOffset, edgeOffset), ...); }, stores);
   }
 };
 
@@ -320,14 +379,7 @@ struct ChannelStore {
 template <class Channels, class... Stores>
 void reconstructSegment(const HzOrder& order, const Dims3& dims, const Channels& channels, std::uint64_t begin,
                         std::uint64_t end, Stores&... stores) {
-  walkPoints(
-      order, dims, channels, begin, end, [&](std::uint64_t, const std::size_t* vi, const std::int32_t* pred, int n) {
-        const std::int32_t* delta[] = {stores.take(n)...};
-        for (int q = 0; q < n; ++q, pred += Channels::kValues) {
-          int at = 0, j = 0;
-          ((stores.store(vi[q], pred + at, delta[j] + Stores::kComponents * q), at += Stores::kComponents, ++j), ...);
-        }
-      });
+  walkPoints(order, dims, channels, begin, end, SegmentStores<Channels, Stores...>{{stores...}});
   (stores.finish(), ...);
 }
 

@@ -1,6 +1,7 @@
 #include "reference/leb/lead1_coder.h"
 
 #include <algorithm>
+#include <bit>
 #include <random>
 
 #include <gtest/gtest.h>
@@ -198,6 +199,42 @@ TEST_P(Lead1RoundTrip, ReadBothEqualsTheTwoReadsOneAfterTheOther) {
           errors += cut.error.empty() ? 0 : 1;
         }
   EXPECT_GT(errors, 100) << "too few of the cut pages failed: the errors were not compared";
+}
+
+// read() and readBoth() take up to lookupsPerRefill() one-lookup entries between two refills of
+// their bits, and a refill leaves at least 56 (bit_stream.h): so many of the longest entry must fit
+// in 56 bits, or a run would peek past the buffered bits. The longest entry is found here from the
+// table itself, every context and every window, for a code where wide symbols are rare (their codes
+// long, so entries long).
+TEST_P(Lead1RoundTrip, LookupsBetweenRefillsFitTheBufferedBits) {
+  const int bits = GetParam();
+  std::mt19937 rng(static_cast<unsigned>(200 + bits));
+  std::vector<std::int32_t> deltas;
+  for (int i = 0; i < 50000; ++i) {
+    const int mag = std::min(std::countr_zero(rng() | (1u << (bits - 1))), bits - 1);  // symbol s: about 2^-s
+    deltas.push_back(static_cast<std::int32_t>(((1 << mag) | (rng() % (1u << mag))) * ((rng() & 1) ? 1 : -1)) / 2);
+  }
+  Lead1Counter counter(bits);
+  counter.add(deltas);
+  const Lead1Code code = counter.code();
+  const Lead1Decoder dec(code);
+  std::uint32_t longest = 0;
+  for (int context = 0; context < code.symbols(); ++context)
+    for (std::uint32_t window = 0; window < (1u << Lead1Decoder::kFastBits); ++window)
+      longest = std::max(longest, dec.fastEntry(context, window) & 31);
+  ASSERT_GT(longest, 10u) << "no entry reads past its window: the bound was not tested";
+  EXPECT_LE(static_cast<std::uint32_t>(dec.lookupsPerRefill()) * longest, 56u);
+  EXPECT_GT(static_cast<std::uint32_t>(dec.lookupsPerRefill() + 1) * longest, 56u);
+  EXPECT_GE(dec.lookupsPerRefill(), 2);
+  // And the values of such pages: read() against next(), one value at a time.
+  BitWriter w;
+  Lead1Encoder(code).encodePage(deltas, w);
+  const std::string page = w.finish();
+  std::vector<std::int32_t> back(deltas.size());
+  Lead1PageReader(dec, page, 0, "page").read(back);
+  Lead1PageReader one(dec, page, 0, "page");
+  for (std::size_t i = 0; i < deltas.size(); ++i) ASSERT_EQ(one.next(), deltas[i]) << "value " << i;
+  EXPECT_EQ(back, deltas);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bits, Lead1RoundTrip, ::testing::Values(8, 16));
