@@ -100,12 +100,13 @@ class WholeDecodeOutputs {
     return {stream_.dims, stream_.sampleBits, data8_.empty() ? nullptr : data8_.data(),
             data16_.empty() ? nullptr : data16_.data(), gradients_.empty() ? nullptr : gradients_.data()};
   }
-  // Throws unless the last decode wrote the data set's samples and gradients (quantizedGradients).
-  void check(const LebDataset& d) const {
+  // Throws unless the last decode wrote the data set's samples and, where the outputs hold them,
+  // its gradients (`gradients`: quantizedGradients of its volume, computed once by the caller).
+  void check(const LebDataset& d, const std::vector<std::int8_t>& gradients) const {
     const std::vector<std::uint16_t>& want = d.volume.data();
     const bool samples =
         data8_.empty() ? data16_ == want : std::equal(want.begin(), want.end(), data8_.begin(), data8_.end());
-    if (!samples || (!gradients_.empty() && gradients_ != ref::quantizedGradients(d.volume)))
+    if (!samples || (!gradients_.empty() && gradients_ != gradients))
       throw std::runtime_error("LEB whole decode of " + d.name + " into outputs made once is not lossless");
   }
 
@@ -421,6 +422,7 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
   t.rows.push_back({"page decompression / zstd -19 decode (goal >= 0.5)", formatNumber("%.2f", ofZstd(out, p1)),
                     formatNumber("%.2f", ofZstd(out, p2)), ""});
   const double volumeBytes = static_cast<double>(d->volume.data().size()) * (d->bits / 8 + 3);
+  const std::vector<std::int8_t> wantGradients = ref::quantizedGradients(d->volume);  // what each decode must give
   // The whole decode of a stream on one and two threads: a row of MB/s and a row against the goal.
   // It decodes as `voxref decode` does, into outputs of the stream's sample width, and into outputs
   // made once, as zstd's decode writes into a buffer made once (ZstdFrame); what the timed runs
@@ -430,7 +432,7 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
     const std::array<std::array<Timing, 2>, 2> turns = {
         takingTurnsWithZstd([&] { ref::decodeLebInto(stream, outputs.span(), 1); }),
         takingTurnsWithZstd([&] { ref::decodeLebInto(stream, outputs.span(), 2); })};
-    outputs.check(*d);
+    outputs.check(*d, wantGradients);
     const std::array<Timing, 2> w = {turns[0][0], turns[1][0]};
     t.rows.push_back({what, mbps(volumeBytes, w[0].median), mbps(volumeBytes, w[1].median), ""});
     t.rows.push_back({goalWhat, formatNumber("%.2f", volumeBytes / 1e6 / w[0].median / kWholeDecodeGoalMBps),
@@ -515,7 +517,7 @@ BenchTable decodeSpeed(const BenchOptions& o, const std::vector<LebDataset>& set
     WholeDecodeOutputs outputs(*context.stream);
     const std::array<Timing, 2> c = {measure([&] { ref::decodeLebInto(*context.stream, outputs.span(), 1); }),
                                      measure([&] { ref::decodeLebInto(*context.stream, outputs.span(), 2); })};
-    outputs.check(*d);
+    outputs.check(*d, wantGradients);
     t.rows.push_back({"whole volume, context coder (pages of 2^16, gradients " + gradients + "; a stream of " +
                           std::to_string(context.stream->bytes.size()) + " bytes), MB/s of data and gradients",
                       mbps(volumeBytes, c[0].median), mbps(volumeBytes, c[1].median), ""});

@@ -68,14 +68,19 @@ std::vector<Load> loadsInTurn() {
           {ref::IsoMesh{}, camera(64, 48)},
           {strip(57, -1.0f), camera(40, 30)}};
 }
+// Loads each of loadsInTurn() into `renderer` in turn and calls check(i, mesh, camera) after each.
+template <class Check>
+void afterEachLoad(IsoMeshRenderer& renderer, Check&& check) {
+  const std::vector<Load> loads = loadsInTurn();
+  for (std::size_t i = 0; i < loads.size(); ++i) {
+    renderer.load(loads[i].mesh);
+    check(i, loads[i].mesh, loads[i].camera);
+  }
+}
 
 TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
   IsoMeshRenderer renderer(*context_);
-  const std::vector<Load> loads = loadsInTurn();
-  for (std::size_t i = 0; i < loads.size(); ++i) {
-    const ref::IsoMesh& mesh = loads[i].mesh;
-    const ref::ViewCamera& view = loads[i].camera;
-    renderer.load(mesh);
+  afterEachLoad(renderer, [&](std::size_t i, const ref::IsoMesh& mesh, const ref::ViewCamera& view) {
     const IsoImageGl reused = renderer.render(view);
     const IsoImageGl fresh = renderIsoMeshGl(*context_, mesh, view);
     expectSameImage(reused, fresh, "mesh " + std::to_string(i));
@@ -84,7 +89,7 @@ TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
     for (std::uint32_t id : reused.primitive) highest = std::max(highest, id);
     EXPECT_EQ(highest == 0, mesh.indices.empty()) << "mesh " << i;
     EXPECT_LE(highest, mesh.triangleCount()) << "mesh " << i;
-  }
+  });
 }
 
 // display() draws the frame's image with a program of its own (iso_mesh_display.frag), the same
@@ -92,11 +97,7 @@ TEST_F(IsoGl, AReusedRendererDrawsEachMeshAsAFreshOneDoes) {
 // pixel, for each mesh; and a display in between leaves render()'s images as a fresh renderer's.
 TEST_F(IsoGl, ADisplayedFrameIsTheColourOfTheOraclesImage) {
   IsoMeshRenderer renderer(*context_);
-  const std::vector<Load> loads = loadsInTurn();
-  for (std::size_t i = 0; i < loads.size(); ++i) {
-    const ref::IsoMesh& mesh = loads[i].mesh;
-    const ref::ViewCamera& view = loads[i].camera;
-    renderer.load(mesh);
+  afterEachLoad(renderer, [&](std::size_t i, const ref::IsoMesh& mesh, const ref::ViewCamera& view) {
     const std::vector<std::array<std::uint8_t, 4>> shown = renderer.display(view);
     const IsoImageGl judged = renderer.render(view);
     EXPECT_EQ(shown, judged.rgba) << "mesh " << i;
@@ -106,7 +107,7 @@ TEST_F(IsoGl, ADisplayedFrameIsTheColourOfTheOraclesImage) {
     (void)renderer.display(view);
     expectSameImage(renderer.render(view), renderIsoMeshGl(*context_, mesh, view),
                     "mesh " + std::to_string(i) + " after a display");
-  }
+  });
 }
 
 TEST_F(IsoGl, QueriesTestAgainstTheMeshLoadedLast) {
